@@ -1,0 +1,34 @@
+#pragma once
+// The plastic capacities of a section (paper eqs. 2.10-2.14; ../shared/DESIGN.md):
+//   N  = Σ fy·A                 axial force along y            [N]     eq. 2.10
+//   Qx = Qz = Σ τy·A            shear forces along x and z     [N]     eq. 2.11
+//   Mx = ∫ fy·|z − z_pna| dA    bending about x                [N·m]   eq. 2.12, about the plastic neutral axis
+//   Mz = ∫ fy·|x − x_pna| dA    bending about z                [N·m]   eq. 2.13
+//   My = ∫ τy·|p − c| dA        torsion about y, c = joint point [N·m] eq. 2.14, Fig. 2.6
+// τy = fy/2 (Tresca) or fy/√3 (von Mises).
+#include <optional>
+
+#include "plascap/sections/capacity_set.hpp"
+#include "plascap/sections/geometry.hpp"
+#include "plascap/sections/valid_section.hpp"
+
+namespace plascap {
+
+struct Capacities {
+    // Each capacity is present exactly when it was asked for.
+    std::optional<double> N, Qx, Qz, Mx, Mz, My;
+
+    double area = 0.0;                // [m²], always
+    Point centroid;                   // area centroid [m], always
+    std::optional<double> z_pna;      // plastic neutral axis of Mx, z = z_pna [m], with Mx
+    std::optional<double> x_pna;      // plastic neutral axis of Mz, x = x_pna [m], with Mz
+    std::optional<Point> reference;   // joint point of My [m], with My
+    ShearCriterion shear = ShearCriterion::Tresca;
+
+    std::optional<double> get(Capacity c) const;
+};
+
+// Exact closed forms over the polygons; coordinates of results are section coordinates.
+Capacities compute_capacities(const ValidSection& section, CapacitySet wanted = CapacitySet::all());
+
+}  // namespace plascap

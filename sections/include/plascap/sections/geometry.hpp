@@ -1,0 +1,33 @@
+#pragma once
+// Cross-section geometry as users give it. Coordinates are [x, z] in metres; the section lies
+// in the x-z plane and the joint (beam) axis is y (../shared/DESIGN.md, paper Fig. 2.2).
+#include <optional>
+#include <vector>
+
+#include "plascap/materials/material.hpp"
+#include "plascap/materials/shear_criterion.hpp"
+
+namespace plascap {
+
+struct Point {
+    double x = 0.0;  // [m]
+    double z = 0.0;  // [m]
+};
+
+// A closed polygon, either orientation; a closing vertex equal to the first is allowed.
+using Ring = std::vector<Point>;
+
+// One connected piece of material: an outer ring with holes strictly inside it.
+struct Part {
+    Ring outer;
+    std::vector<Ring> holes;
+    Material material;
+};
+
+struct Section {
+    std::vector<Part> parts;                  // interiors must not overlap (a shared edge is fine)
+    ShearCriterion shear = ShearCriterion::Tresca;
+    std::optional<Point> reference;           // joint point for My; default: area centroid
+};
+
+}  // namespace plascap

@@ -1,0 +1,46 @@
+#pragma once
+// Exact integrals over one polygon ring by Green's theorem, signed by orientation
+// (counter-clockwise positive, so a clockwise hole subtracts). All closed forms, no quadrature.
+#include "plascap/sections/geometry.hpp"
+
+namespace plascap {
+
+// Which bending moment: Mx bends about x, so its stress varies with z and its plastic neutral
+// axis is a line z = const; Mz bends about z, stress varies with x, neutral axis x = const.
+enum class BendingAxis { X, Z };
+
+// The coordinate the bending stress varies with ("level"): z for BendingAxis::X, x for Z.
+inline double level_of(Point p, BendingAxis axis) { return axis == BendingAxis::X ? p.z : p.x; }
+
+struct RingMoments {
+    double area = 0.0;  // ∫ dA        [m²]
+    double Sx = 0.0;    // ∫ x dA      [m³]
+    double Sz = 0.0;    // ∫ z dA      [m³]
+};
+
+// Area and first moments (shoelace / Green's theorem, e.g. Steger, "On the calculation of
+// arbitrary moments of polygons", 1996).
+RingMoments ring_moments(const Ring& ring);
+
+enum class Side { Below, Above };
+
+struct HalfPlaneMoments {
+    double area = 0.0;          // ∫ dA over the part of the ring on `side` of the line
+    double first_moment = 0.0;  // ∫ (level − t) dA over the same part (negative below, positive above)
+};
+
+// The ring clipped to level < t (Below) or level > t (Above). By Green's theorem the cut along
+// the line adds nothing (d(level) = 0 on it), so the integrals are sums over clipped edges.
+HalfPlaneMoments half_plane_moments(const Ring& ring, BendingAxis axis, double t, Side side);
+
+// d/dt of the area below level t, for t in [a, b] where no vertex level lies strictly inside
+// (a, b): the chord length of the ring on the line, linear in t there. Evaluated exactly at the
+// ends a or b from the edges spanning the interval.
+double chord_length(const Ring& ring, BendingAxis axis, double a, double b, double t);
+
+// ∫ |p − c| dA: the paper's eq. 2.14 integral about the joint point c, by the per-edge closed form
+// of the triangle fan from c: ∫∫_tri r dA = (h/6)[s r + h² asinh(s/h)] evaluated between the edge
+// ends, h the edge line's distance from c and s the position along it (∫ sec³).
+double distance_integral(const Ring& ring, Point c);
+
+}  // namespace plascap

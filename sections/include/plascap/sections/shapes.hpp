@@ -1,0 +1,18 @@
+#pragma once
+// Rings of common shapes, centred on the origin, counter-clockwise.
+#include <cstddef>
+
+#include "plascap/sections/geometry.hpp"
+
+namespace plascap {
+
+// b along x, h along z.
+Ring rectangle_ring(double b, double h);
+
+// n vertices on a circle of radius R, the first at angle `start_angle` [rad] from +x.
+Ring regular_polygon_ring(std::size_t n, double R, double start_angle = 0.0);
+
+// The section-calc --rect shortcut: one b x h rectangle part of yield stress fy.
+Section rectangle_section(double b, double h, double fy, ShearCriterion shear = ShearCriterion::Tresca);
+
+}  // namespace plascap

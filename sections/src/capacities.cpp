@@ -1,0 +1,104 @@
+#include "plascap/sections/capacities.hpp"
+
+#include "plascap/sections/neutral_axis.hpp"
+#include "plascap/sections/ring_integrals.hpp"
+
+namespace plascap {
+namespace {
+
+struct PartTotals {
+    double force = 0.0;        // Σ fy·A  [N]
+    double shear_force = 0.0;  // Σ τy·A  [N]
+    RingMoments moments;       // ∫dA, ∫x dA, ∫z dA over the whole section (local coordinates)
+};
+
+PartTotals sum_parts(const ValidSection& section) {
+    PartTotals totals;
+    for (const Part& part : section.parts()) {
+        RingMoments m = ring_moments(part.outer);
+        for (const Ring& hole : part.holes) {
+            const RingMoments h = ring_moments(hole);  // clockwise: negative
+            m.area += h.area;
+            m.Sx += h.Sx;
+            m.Sz += h.Sz;
+        }
+        totals.force += part.material.fy * m.area;                                          // eq. 2.10
+        totals.shear_force += shear_yield_stress(part.material.fy, section.shear()) * m.area;  // eq. 2.11
+        totals.moments.area += m.area;
+        totals.moments.Sx += m.Sx;
+        totals.moments.Sz += m.Sz;
+    }
+    return totals;
+}
+
+// ∫ fy·|level − t| dA about the plastic neutral axis t (eqs. 2.12, 2.13): the first moments of
+// both sides about t, each of one sign, so the sum has no cancellation.
+double plastic_moment(const ValidSection& section, BendingAxis axis, double t) {
+    double moment = 0.0;
+    for (const Part& part : section.parts()) {
+        double above = half_plane_moments(part.outer, axis, t, Side::Above).first_moment;
+        double below = half_plane_moments(part.outer, axis, t, Side::Below).first_moment;
+        for (const Ring& hole : part.holes) {
+            above += half_plane_moments(hole, axis, t, Side::Above).first_moment;
+            below += half_plane_moments(hole, axis, t, Side::Below).first_moment;
+        }
+        moment += part.material.fy * (above - below);
+    }
+    return moment;
+}
+
+// ∫ τy·|p − c| dA (eq. 2.14), c in local coordinates.
+double torsion_capacity(const ValidSection& section, Point c) {
+    double moment = 0.0;
+    for (const Part& part : section.parts()) {
+        double integral = distance_integral(part.outer, c);
+        for (const Ring& hole : part.holes) integral += distance_integral(hole, c);
+        moment += shear_yield_stress(part.material.fy, section.shear()) * integral;
+    }
+    return moment;
+}
+
+}  // namespace
+
+std::optional<double> Capacities::get(Capacity c) const {
+    switch (c) {
+        case Capacity::N: return N;
+        case Capacity::Qx: return Qx;
+        case Capacity::Qz: return Qz;
+        case Capacity::Mx: return Mx;
+        case Capacity::Mz: return Mz;
+        case Capacity::My: return My;
+    }
+    return std::nullopt;
+}
+
+Capacities compute_capacities(const ValidSection& section, CapacitySet wanted) {
+    Capacities result;
+    result.shear = section.shear();
+    const PartTotals totals = sum_parts(section);
+    const Point local_centroid{totals.moments.Sx / totals.moments.area, totals.moments.Sz / totals.moments.area};
+    result.area = totals.moments.area;
+    result.centroid = section.to_section(local_centroid);
+
+    if (wanted.contains(Capacity::N)) result.N = totals.force;
+    if (wanted.contains(Capacity::Qx)) result.Qx = totals.shear_force;
+    if (wanted.contains(Capacity::Qz)) result.Qz = totals.shear_force;
+    if (wanted.contains(Capacity::Mx)) {
+        const double t = plastic_neutral_axis(section, BendingAxis::X);
+        result.Mx = plastic_moment(section, BendingAxis::X, t);
+        result.z_pna = t + section.local_origin().z;
+    }
+    if (wanted.contains(Capacity::Mz)) {
+        const double t = plastic_neutral_axis(section, BendingAxis::Z);
+        result.Mz = plastic_moment(section, BendingAxis::Z, t);
+        result.x_pna = t + section.local_origin().x;
+    }
+    if (wanted.contains(Capacity::My)) {
+        const Point c = section.reference() ? section.to_local(*section.reference()) : local_centroid;
+        result.My = torsion_capacity(section, c);
+        result.reference = section.reference() ? *section.reference() : result.centroid;
+    }
+    return result;
+}
+
+}  // namespace plascap

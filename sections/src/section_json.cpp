@@ -1,0 +1,141 @@
+#include "plascap/sections/section_json.hpp"
+
+#include <fstream>
+#include <initializer_list>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "plascap/input_error.hpp"
+
+namespace plascap {
+namespace {
+
+using nlohmann::json;
+
+[[noreturn]] void fail(const std::string& where, const std::string& what) { throw InputError(where + ": " + what); }
+
+std::string type_name(const json& value) { return value.type_name(); }
+
+void reject_unknown_keys(const json& object, const std::string& where, std::initializer_list<const char*> known) {
+    for (const auto& item : object.items()) {
+        bool ok = false;
+        std::string list;
+        for (const char* k : known) {
+            ok = ok || item.key() == k;
+            list += (list.empty() ? "" : ", ") + std::string(k);
+        }
+        if (!ok) fail(where, "unknown key \"" + item.key() + "\" (known keys: " + list + ")");
+    }
+}
+
+double read_number(const json& value, const std::string& where) {
+    if (!value.is_number()) fail(where, "expected a number, got " + type_name(value));
+    return value.get<double>();
+}
+
+Point read_point(const json& value, const std::string& where) {
+    if (!value.is_array() || value.size() != 2)
+        fail(where, "expected a point [x, z] (two numbers in metres), got " +
+                        (value.is_array() ? "an array of " + std::to_string(value.size()) : type_name(value)));
+    return {read_number(value[0], where + "[0]"), read_number(value[1], where + "[1]")};
+}
+
+Ring read_ring(const json& value, const std::string& where) {
+    if (!value.is_array()) fail(where, "expected a ring: an array of [x, z] points, got " + type_name(value));
+    Ring ring;
+    ring.reserve(value.size());
+    for (std::size_t i = 0; i < value.size(); ++i) ring.push_back(read_point(value[i], where + "[" + std::to_string(i) + "]"));
+    return ring;
+}
+
+Material read_material(const json& value, const std::string& where) {
+    if (value.is_string())
+        fail(where, "material \"" + value.get<std::string>() +
+                        "\": named materials need the materials catalogue, which plascap does not have yet; "
+                        "give an object such as {\"fy\": 355e6}");
+    if (!value.is_object()) fail(where, "expected a material object such as {\"fy\": 355e6}, got " + type_name(value));
+    reject_unknown_keys(value, where, {"fy", "name"});
+    if (!value.contains("fy")) fail(where, "the material has no yield stress \"fy\" [Pa]");
+    Material material;
+    material.fy = read_number(value["fy"], where + ".fy");
+    if (value.contains("name")) {
+        if (!value["name"].is_string()) fail(where + ".name", "expected a string, got " + type_name(value["name"]));
+        material.name = value["name"].get<std::string>();
+    }
+    return material;
+}
+
+Part read_part(const json& value, const std::string& where, const std::optional<Material>& default_material) {
+    if (!value.is_object()) fail(where, "expected a part object {\"outer\": [...], \"holes\": [...]}, got " + type_name(value));
+    reject_unknown_keys(value, where, {"outer", "holes", "material", "name"});
+    if (!value.contains("outer")) fail(where, "the part has no \"outer\" ring");
+    Part part;
+    part.outer = read_ring(value["outer"], where + ".outer");
+    if (value.contains("holes")) {
+        const json& holes = value["holes"];
+        if (!holes.is_array()) fail(where + ".holes", "expected an array of rings, got " + type_name(holes));
+        for (std::size_t h = 0; h < holes.size(); ++h)
+            part.holes.push_back(read_ring(holes[h], where + ".holes[" + std::to_string(h) + "]"));
+    }
+    if (value.contains("material")) {
+        part.material = read_material(value["material"], where + ".material");
+    } else if (default_material) {
+        part.material = *default_material;
+    } else {
+        fail(where, "no material: give the part a \"material\" or the section a default \"material\"");
+    }
+    return part;
+}
+
+json parse_json(std::string_view text) {
+    try {
+        return json::parse(text.begin(), text.end());
+    } catch (const json::parse_error& e) {
+        // nlohmann's message names the line and column.
+        throw InputError(std::string("malformed JSON: ") + e.what());
+    } catch (const json::exception& e) {
+        throw InputError(std::string("unreadable JSON: ") + e.what());
+    }
+}
+
+}  // namespace
+
+Section parse_section_json(std::string_view text) {
+    const json root = parse_json(text);
+    if (!root.is_object()) fail("section", "expected a JSON object with \"parts\", got " + type_name(root));
+    reject_unknown_keys(root, "section", {"shear", "reference", "material", "parts", "name", "description"});
+
+    Section section;
+    if (root.contains("shear")) {
+        if (!root["shear"].is_string()) fail("shear", "expected \"tresca\" or \"von-mises\", got " + type_name(root["shear"]));
+        try {
+            section.shear = parse_shear_criterion(root["shear"].get<std::string>());
+        } catch (const InputError& e) {
+            fail("shear", e.what());
+        }
+    }
+    if (root.contains("reference")) section.reference = read_point(root["reference"], "reference");
+    std::optional<Material> default_material;
+    if (root.contains("material")) default_material = read_material(root["material"], "material");
+
+    if (!root.contains("parts")) fail("section", "has no \"parts\"");
+    const json& parts = root["parts"];
+    if (!parts.is_array()) fail("parts", "expected an array of parts, got " + type_name(parts));
+    for (std::size_t p = 0; p < parts.size(); ++p)
+        section.parts.push_back(read_part(parts[p], "parts[" + std::to_string(p) + "]", default_material));
+    return section;
+}
+
+Section read_section_file(const std::string& path) {
+    std::ifstream file(path, std::ios::binary);
+    if (!file) throw InputError(path + ": cannot open the file");
+    std::ostringstream text;
+    text << file.rdbuf();
+    try {
+        return parse_section_json(text.str());
+    } catch (const InputError& e) {
+        throw InputError(path + ": " + e.what());
+    }
+}
+
+}  // namespace plascap

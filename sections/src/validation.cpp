@@ -1,0 +1,200 @@
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "plascap/input_error.hpp"
+#include "plascap/sections/ring_integrals.hpp"
+#include "plascap/sections/valid_section.hpp"
+#include "topology_checks.hpp"
+
+namespace plascap {
+namespace {
+
+// Supported sizes (documented in docs/sections.md): coordinates within ±1e6 m, rings at least
+// 1e-9 m across, and area at least 1e-12 of the square of the ring's extent (anything thinner is
+// collinear up to the round-off of its own coordinates).
+constexpr double kMaxCoordinate = 1e6;
+constexpr double kMinExtent = 1e-9;
+constexpr double kMinAreaRatio = 1e-12;
+// Above this many vertices a self-intersection is reported without naming the edges (O(n²) search).
+constexpr std::size_t kMaxVerticesToLocate = 5000;
+
+std::string number(double value) {
+    std::ostringstream out;
+    out.precision(17);
+    out << value;
+    return out.str();
+}
+
+struct RingId {
+    std::size_t part;
+    int hole;  // -1: the outer ring
+
+    std::string name() const {
+        return "part " + std::to_string(part) + ", " + (hole < 0 ? std::string("outer ring") : "hole " + std::to_string(hole));
+    }
+    std::string vertex(std::size_t i) const { return name() + ", vertex " + std::to_string(i); }
+};
+
+[[noreturn]] void fail(const std::string& where, const std::string& what) { throw InputError(where + ": " + what); }
+
+bool same_point(Point a, Point b) { return a.x == b.x && a.z == b.z; }
+
+// Shoelace area about the ring's first vertex: no cancellation when the ring is far from the origin.
+double signed_area(const Ring& ring) {
+    Ring local = ring;
+    for (Point& p : local) p = {p.x - ring[0].x, p.z - ring[0].z};
+    return ring_moments(local).area;
+}
+
+// Drops the closing vertex, then checks what a ring must be on its own: enough vertices,
+// finite and in-range coordinates, no repeated neighbours, non-vanishing area, simple.
+Ring checked_ring(Ring ring, const RingId& id) {
+    if (ring.size() > 1 && same_point(ring.front(), ring.back())) ring.pop_back();
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+        for (const auto& [axis, value] : {std::pair<const char*, double>{"x", ring[i].x}, {"z", ring[i].z}}) {
+            if (!std::isfinite(value))
+                fail(id.vertex(i), std::string("coordinate ") + axis + " is not a finite number (" + number(value) + ")");
+            if (std::fabs(value) > kMaxCoordinate)
+                fail(id.vertex(i), std::string("coordinate ") + axis + " = " + number(value) +
+                                       " m is outside the supported range ±1e6 m");
+        }
+    }
+    if (ring.size() < 3)
+        fail(id.name(), "has " + std::to_string(ring.size()) + " distinct vertices; a ring needs at least 3");
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+        const std::size_t next = (i + 1) % ring.size();
+        if (same_point(ring[i], ring[next]))
+            fail(id.vertex(next), "repeats vertex " + std::to_string(i));
+    }
+    double min_x = ring[0].x, max_x = ring[0].x, min_z = ring[0].z, max_z = ring[0].z;
+    for (Point p : ring) {
+        min_x = std::min(min_x, p.x), max_x = std::max(max_x, p.x);
+        min_z = std::min(min_z, p.z), max_z = std::max(max_z, p.z);
+    }
+    const double extent = std::max(max_x - min_x, max_z - min_z);
+    if (extent < kMinExtent)
+        fail(id.name(), "is only " + number(extent) + " m across; the smallest supported ring is 1e-9 m across");
+    const double area = signed_area(ring);
+    if (!(std::fabs(area) > kMinAreaRatio * extent * extent))
+        fail(id.name(), "has zero or vanishing area (" + number(std::fabs(area)) +
+                            " m²): its vertices are collinear or nearly so");
+    if (!detail::ring_is_simple(ring)) {
+        const auto edges = detail::find_intersecting_edges(ring, kMaxVerticesToLocate);
+        if (!edges) fail(id.name(), "is self-intersecting");
+        const std::size_t n = ring.size();
+        fail(id.vertex(edges->first), "is self-intersecting: edge " + std::to_string(edges->first) + "-" +
+                                          std::to_string((edges->first + 1) % n) + " meets edge " +
+                                          std::to_string(edges->second) + "-" +
+                                          std::to_string((edges->second + 1) % n));
+    }
+    return ring;
+}
+
+void orient(Ring& ring, bool counter_clockwise) {
+    if ((signed_area(ring) > 0.0) != counter_clockwise) std::reverse(ring.begin(), ring.end());
+}
+
+// Holes strictly inside the outer ring and apart from each other.
+void check_holes(const Part& part, std::size_t p) {
+    if (part.holes.empty()) return;
+    std::vector<const Ring*> rings{&part.outer};
+    for (const Ring& hole : part.holes) rings.push_back(&hole);
+    const bool touching = detail::any_rings_touch(rings);
+    for (std::size_t h = 0; h < part.holes.size(); ++h) {
+        const RingId id{p, static_cast<int>(h)};
+        if (touching && detail::rings_touch(part.outer, part.holes[h]))
+            fail(id.name(), "touches or crosses its outer ring; holes must lie strictly inside it");
+        if (!detail::strictly_inside(part.outer, part.holes[h][0]))
+            fail(id.name(), "lies outside its outer ring; holes must lie strictly inside it");
+        for (std::size_t g = 0; g < h; ++g) {
+            if ((touching && detail::rings_touch(part.holes[g], part.holes[h])) ||
+                detail::strictly_inside(part.holes[g], part.holes[h][0]) ||
+                detail::strictly_inside(part.holes[h], part.holes[g][0]))
+                fail(id.name(), "overlaps or touches hole " + std::to_string(g) + " of the same part");
+        }
+    }
+}
+
+struct Box {
+    double min_x, max_x, min_z, max_z;
+    bool overlaps(const Box& o) const {
+        return min_x < o.max_x && o.min_x < max_x && min_z < o.max_z && o.min_z < max_z;
+    }
+};
+
+Box bounding_box(const Ring& ring) {
+    Box b{ring[0].x, ring[0].x, ring[0].z, ring[0].z};
+    for (Point p : ring) {
+        b.min_x = std::min(b.min_x, p.x), b.max_x = std::max(b.max_x, p.x);
+        b.min_z = std::min(b.min_z, p.z), b.max_z = std::max(b.max_z, p.z);
+    }
+    return b;
+}
+
+void check_parts_apart(const std::vector<Part>& parts) {
+    std::vector<Box> boxes;
+    for (const Part& part : parts) boxes.push_back(bounding_box(part.outer));
+    for (std::size_t i = 0; i < parts.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+            if (boxes[i].overlaps(boxes[j]) && detail::interiors_overlap(parts[i], parts[j]))
+                fail("part " + std::to_string(i), "overlaps part " + std::to_string(j) +
+                                                      " (their interiors intersect; sharing an edge is allowed)");
+}
+
+}  // namespace
+
+std::size_t ValidSection::vertex_count() const {
+    std::size_t n = 0;
+    for (const Part& part : parts_) {
+        n += part.outer.size();
+        for (const Ring& hole : part.holes) n += hole.size();
+    }
+    return n;
+}
+
+ValidSection validate_section(const Section& section) {
+    if (section.parts.empty()) throw InputError("section: has no parts; give at least one part with an outer ring");
+    ValidSection valid;
+    valid.shear_ = section.shear;
+    for (std::size_t p = 0; p < section.parts.size(); ++p) {
+        const Part& given = section.parts[p];
+        validate_material(given.material, "part " + std::to_string(p) + ", material");
+        Part part{checked_ring(given.outer, {p, -1}), {}, given.material};
+        orient(part.outer, true);
+        for (std::size_t h = 0; h < given.holes.size(); ++h) {
+            part.holes.push_back(checked_ring(given.holes[h], {p, static_cast<int>(h)}));
+            orient(part.holes.back(), false);
+        }
+        check_holes(part, p);
+        valid.parts_.push_back(std::move(part));
+    }
+    check_parts_apart(valid.parts_);
+
+    if (section.reference) {
+        const Point r = *section.reference;
+        if (!std::isfinite(r.x) || !std::isfinite(r.z) || std::fabs(r.x) > kMaxCoordinate ||
+            std::fabs(r.z) > kMaxCoordinate)
+            throw InputError("reference: the joint point (" + number(r.x) + ", " + number(r.z) +
+                             ") must be finite and within ±1e6 m");
+        valid.reference_ = r;
+    }
+
+    // Local origin: the centre of the bounding box of all parts.
+    Box all = bounding_box(valid.parts_[0].outer);
+    for (const Part& part : valid.parts_) {
+        const Box b = bounding_box(part.outer);
+        all = {std::min(all.min_x, b.min_x), std::max(all.max_x, b.max_x), std::min(all.min_z, b.min_z),
+               std::max(all.max_z, b.max_z)};
+    }
+    valid.origin_ = {0.5 * (all.min_x + all.max_x), 0.5 * (all.min_z + all.max_z)};
+    for (Part& part : valid.parts_) {
+        for (Point& q : part.outer) q = valid.to_local(q);
+        for (Ring& hole : part.holes)
+            for (Point& q : hole) q = valid.to_local(q);
+    }
+    return valid;
+}
+
+}  // namespace plascap

@@ -1,0 +1,92 @@
+#include "capacity_report.hpp"
+
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace plascap::tools {
+namespace {
+
+struct Row {
+    Capacity capacity;
+    const char* meaning;
+    const char* unit;
+};
+
+constexpr Row kRows[] = {
+    {Capacity::N, "axial force along y (eq. 2.10)", "N"},
+    {Capacity::Qx, "shear force along x (eq. 2.11)", "N"},
+    {Capacity::Qz, "shear force along z (eq. 2.11)", "N"},
+    {Capacity::Mx, "bending about x (eq. 2.12)", "N·m"},
+    {Capacity::Mz, "bending about z (eq. 2.13)", "N·m"},
+    {Capacity::My, "torsion about y (eq. 2.14)", "N·m"},
+};
+
+std::string format(const char* pattern, double a) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, pattern, a);
+    return buffer;
+}
+
+std::string format(const char* pattern, double a, double b) {
+    char buffer[96];
+    std::snprintf(buffer, sizeof buffer, pattern, a, b);
+    return buffer;
+}
+
+// Pads to `width` characters as a terminal shows them (UTF-8 continuation bytes take no column).
+std::string padded(const std::string& text, std::size_t width) {
+    std::size_t columns = 0;
+    for (unsigned char ch : text) columns += (ch & 0xC0) != 0x80;
+    return text + std::string(columns < width ? width - columns : 0, ' ');
+}
+
+std::string shear_rule(ShearCriterion shear) {
+    return shear == ShearCriterion::Tresca ? "Tresca, τy = fy/2" : "von Mises, τy = fy/√3";
+}
+
+}  // namespace
+
+std::string capacity_table(const Capacities& c, const ReportContext& context) {
+    std::ostringstream out;
+    std::size_t holes = 0;
+    for (const Part& part : context.section->parts()) holes += part.holes.size();
+    out << "section     " << context.source << "\n"
+        << "            " << context.section->parts().size() << " part(s), " << holes << " hole(s), "
+        << context.section->vertex_count() << " vertices\n"
+        << "method      " << context.method << "; shear " << shear_rule(c.shear) << "\n"
+        << "area        " << format("%.10g m²", c.area) << "\n"
+        << "centroid    " << format("x = %.10g m, z = %.10g m", c.centroid.x, c.centroid.z) << "\n";
+    if (c.z_pna) out << "Mx axis     " << format("z = %.10g m (plastic neutral axis, equal force)", *c.z_pna) << "\n";
+    if (c.x_pna) out << "Mz axis     " << format("x = %.10g m (plastic neutral axis, equal force)", *c.x_pna) << "\n";
+    if (c.reference) out << "joint point " << format("x = %.10g m, z = %.10g m (My)", c.reference->x, c.reference->z) << "\n";
+    out << "\n  capacity  value              unit  meaning\n";
+    for (const Row& row : kRows) {
+        const std::optional<double> value = c.get(row.capacity);
+        if (!value) continue;
+        char line[160];
+        std::snprintf(line, sizeof line, "  %-8s  %-17.10g  %s  %s\n", to_string(row.capacity).c_str(), *value,
+                      padded(row.unit, 4).c_str(), row.meaning);
+        out << line;
+    }
+    return out.str();
+}
+
+std::string capacity_json(const Capacities& c, const ReportContext& context) {
+    nlohmann::ordered_json out;
+    for (Capacity capacity : kAllCapacities)
+        if (const std::optional<double> value = c.get(capacity)) out[to_string(capacity)] = *value;
+    out["area"] = c.area;
+    out["centroid"] = {c.centroid.x, c.centroid.z};
+    if (c.z_pna) out["z_pna"] = *c.z_pna;
+    if (c.x_pna) out["x_pna"] = *c.x_pna;
+    if (c.reference) out["reference"] = {c.reference->x, c.reference->z};
+    out["shear"] = to_string(c.shear);
+    out["method"] = context.method;
+    out["parts"] = context.section->parts().size();
+    out["vertices"] = context.section->vertex_count();
+    out["units"] = {{"force", "N"}, {"moment", "N*m"}, {"length", "m"}, {"area", "m^2"}};
+    return out.dump(2) + "\n";
+}
+
+}  // namespace plascap::tools

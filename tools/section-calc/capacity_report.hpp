@@ -1,0 +1,19 @@
+#pragma once
+// How section-calc shows a result: a table for people, one JSON object for programs.
+#include <string>
+
+#include "plascap/sections/capacities.hpp"
+#include "plascap/sections/valid_section.hpp"
+
+namespace plascap::tools {
+
+struct ReportContext {
+    std::string source;  // file name or "--rect B x H"
+    std::string method;  // "exact"
+    const ValidSection* section = nullptr;
+};
+
+std::string capacity_table(const Capacities& capacities, const ReportContext& context);
+std::string capacity_json(const Capacities& capacities, const ReportContext& context);
+
+}  // namespace plascap::tools

@@ -1,0 +1,103 @@
+// section-calc: the plastic capacities of a cross section (../shared/DESIGN.md, "Contracts").
+// Exit codes: 0 success, 2 bad input (one message on stderr), 1 internal failure.
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <iostream>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "capacity_report.hpp"
+#include "plascap/input_error.hpp"
+#include "plascap/sections/capacities.hpp"
+#include "plascap/sections/section_json.hpp"
+#include "plascap/sections/shapes.hpp"
+
+namespace {
+
+struct Options {
+    std::string file;
+    std::vector<double> rect;
+    std::optional<double> fy;
+    std::optional<std::string> shear;
+    std::vector<double> reference;
+    std::string only;
+    std::string method = "exact";
+    bool json = false;
+};
+
+void add_options(CLI::App& app, Options& o) {
+    app.add_option("FILE", o.file, "Section file (JSON, format in docs/section-format.md)");
+    app.add_option("--rect", o.rect, "Shortcut: a centred rectangle, B along x and H along z [m]")->expected(2);
+    app.add_option("--fy", o.fy, "Yield stress [Pa] of the --rect section");
+    app.add_option("--shear", o.shear, "Shear criterion: tresca (τy = fy/2) or von-mises (τy = fy/√3); overrides the file");
+    app.add_option("--reference", o.reference, "Joint point X Z [m] for My; overrides the file (default: centroid)")
+        ->expected(2);
+    app.add_option("--only", o.only, "Compute only these capacities, e.g. N,My (from N, Qx, Qz, Mx, Mz, My)");
+    app.add_option("--method", o.method, "Integration route: exact (closed forms over the polygons)")->capture_default_str();
+    app.add_flag("--json", o.json, "Print one JSON object instead of the table");
+    app.set_version_flag("--version", "section-calc (plascap) 0.1.0");
+}
+
+void require_positive(double value, const std::string& what) {
+    if (!std::isfinite(value) || value <= 0.0)
+        throw plascap::InputError(what + " must be a positive finite number (got " + std::to_string(value) + ")");
+}
+
+plascap::Section load_section(const Options& o, std::string& source) {
+    if (!o.file.empty() && !o.rect.empty()) throw plascap::InputError("give either FILE or --rect B H, not both");
+    if (o.file.empty() && o.rect.empty()) throw plascap::InputError("no section: give FILE or --rect B H --fy FY (see --help)");
+    if (!o.rect.empty()) {
+        if (!o.fy) throw plascap::InputError("--rect needs --fy FY, the yield stress in Pa");
+        require_positive(o.rect[0], "--rect: width B [m]");
+        require_positive(o.rect[1], "--rect: height H [m]");
+        source = "--rect " + std::to_string(o.rect[0]) + " x " + std::to_string(o.rect[1]) + " m";
+        return plascap::rectangle_section(o.rect[0], o.rect[1], *o.fy);
+    }
+    if (o.fy) throw plascap::InputError("--fy goes with --rect; a section file gives its own materials");
+    source = o.file;
+    return plascap::read_section_file(o.file);
+}
+
+int run(const Options& o) {
+    if (o.method != "exact")
+        throw plascap::InputError("--method " + o.method + ": unknown method (available: exact)");
+    const plascap::CapacitySet wanted =
+        o.only.empty() ? plascap::CapacitySet::all() : plascap::CapacitySet::parse(o.only);
+    std::string source;
+    plascap::Section section = load_section(o, source);
+    if (o.shear) section.shear = plascap::parse_shear_criterion(*o.shear);
+    if (!o.reference.empty()) section.reference = plascap::Point{o.reference[0], o.reference[1]};
+
+    const plascap::ValidSection valid = plascap::validate_section(section);
+    const plascap::Capacities capacities = plascap::compute_capacities(valid, wanted);
+    const plascap::tools::ReportContext context{source, o.method, &valid};
+    std::cout << (o.json ? plascap::tools::capacity_json(capacities, context)
+                         : plascap::tools::capacity_table(capacities, context));
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"section-calc: plastic capacities N, Qx, Qz, Mx, Mz, My of a polygon cross section"};
+    Options options;
+    add_options(app, options);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::Success& e) {
+        return app.exit(e);  // --help, --version
+    } catch (const CLI::ParseError& e) {
+        std::cerr << "section-calc: error: " << e.what() << " (see --help)\n";
+        return 2;
+    }
+    try {
+        return run(options);
+    } catch (const plascap::InputError& e) {
+        std::cerr << "section-calc: error: " << e.what() << "\n";
+        return 2;
+    } catch (const std::exception& e) {
+        std::cerr << "section-calc: internal error: " << e.what() << "\n";
+        return 1;
+    }
+}
