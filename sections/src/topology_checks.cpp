@@ -61,6 +61,13 @@ bool ring_is_simple(const Ring& ring) {
     return CGAL::is_simple_2(points.begin(), points.end(), Epick());
 }
 
+bool all_collinear(const Ring& ring) {
+    const std::vector<Epick::Point_2> p = to_points<Epick>(ring);
+    for (std::size_t i = 2; i < p.size(); ++i)
+        if (!CGAL::collinear(p[0], p[1], p[i])) return false;
+    return true;
+}
+
 std::optional<std::pair<std::size_t, std::size_t>> find_intersecting_edges(const Ring& ring,
                                                                            std::size_t max_vertices) {
     const std::size_t n = ring.size();

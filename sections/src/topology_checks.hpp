@@ -13,6 +13,9 @@ namespace plascap::detail {
 // True when the ring is a simple polygon (CGAL::is_simple_2, exact predicates).
 bool ring_is_simple(const Ring& ring);
 
+// True when all vertices lie on one line (exact orientation tests).
+bool all_collinear(const Ring& ring);
+
 // For a non-simple ring of at most `max_vertices` vertices: a pair of edges (i, j), edge k joining
 // vertex k to k+1, that touch or cross other than at their shared vertex. O(n²): messages only.
 std::optional<std::pair<std::size_t, std::size_t>> find_intersecting_edges(const Ring& ring,

@@ -76,11 +76,8 @@ Ring checked_ring(Ring ring, const RingId& id) {
     const double extent = std::max(max_x - min_x, max_z - min_z);
     if (extent < kMinExtent)
         fail(id.name(), "is only " + number(extent) + " m across; the smallest supported ring is 1e-9 m across");
-    const double area = signed_area(ring);
-    if (!(std::fabs(area) > kMinAreaRatio * extent * extent))
-        fail(id.name(), "has zero or vanishing area (" + number(std::fabs(area)) +
-                            " m²): its vertices are collinear or nearly so");
     if (!detail::ring_is_simple(ring)) {
+        if (detail::all_collinear(ring)) fail(id.name(), "has zero area: its vertices are collinear");
         const auto edges = detail::find_intersecting_edges(ring, kMaxVerticesToLocate);
         if (!edges) fail(id.name(), "is self-intersecting");
         const std::size_t n = ring.size();
@@ -89,6 +86,10 @@ Ring checked_ring(Ring ring, const RingId& id) {
                                           std::to_string(edges->second) + "-" +
                                           std::to_string((edges->second + 1) % n));
     }
+    const double area = signed_area(ring);
+    if (!(std::fabs(area) > kMinAreaRatio * extent * extent))
+        fail(id.name(), "has vanishing area (" + number(std::fabs(area)) + " m² for a ring " + number(extent) +
+                            " m across): its vertices are nearly collinear");
     return ring;
 }
 

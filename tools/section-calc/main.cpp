@@ -59,6 +59,16 @@ plascap::Section load_section(const Options& o, std::string& source) {
     return plascap::read_section_file(o.file);
 }
 
+// validate_section, with the file named in front of its message.
+plascap::ValidSection validated(const plascap::Section& section, const std::string& file) {
+    try {
+        return plascap::validate_section(section);
+    } catch (const plascap::InputError& e) {
+        if (file.empty()) throw;
+        throw plascap::InputError(file + ": " + e.what());
+    }
+}
+
 int run(const Options& o) {
     if (o.method != "exact")
         throw plascap::InputError("--method " + o.method + ": unknown method (available: exact)");
@@ -69,7 +79,7 @@ int run(const Options& o) {
     if (o.shear) section.shear = plascap::parse_shear_criterion(*o.shear);
     if (!o.reference.empty()) section.reference = plascap::Point{o.reference[0], o.reference[1]};
 
-    const plascap::ValidSection valid = plascap::validate_section(section);
+    const plascap::ValidSection valid = validated(section, o.file);
     const plascap::Capacities capacities = plascap::compute_capacities(valid, wanted);
     const plascap::tools::ReportContext context{source, o.method, &valid};
     std::cout << (o.json ? plascap::tools::capacity_json(capacities, context)

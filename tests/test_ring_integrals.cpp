@@ -1,0 +1,86 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "plascap/sections/ring_integrals.hpp"
+#include "test_support.hpp"
+
+using namespace plascap;
+using plascap::test::box;
+
+// Rectangle [x0, x1] x [z0, z1]: A = (x1−x0)(z1−z0), ∫x dA = A·(x0+x1)/2, ∫z dA = A·(z0+z1)/2.
+TEST(RingMoments, RectangleAreaAndFirstMoments) {
+    const RingMoments m = ring_moments(box(1.0, 2.0, 4.0, 7.0));
+    EXPECT_NEAR(m.area, 15.0, 1e-13);
+    EXPECT_NEAR(m.Sx, 15.0 * 2.5, 1e-12);
+    EXPECT_NEAR(m.Sz, 15.0 * 4.5, 1e-12);
+}
+
+TEST(RingMoments, ClockwiseRingIsNegative) {
+    Ring r = box(0, 0, 2, 3);
+    std::reverse(r.begin(), r.end());
+    EXPECT_NEAR(ring_moments(r).area, -6.0, 1e-14);
+}
+
+// Square [0,2]²: the part below z = 0.5 has area 1 and ∫(z − 0.5) dA = 2·∫_0^0.5 (z − 0.5) dz = −0.25;
+// above: area 3, ∫(z − 0.5) dA = 2·∫_0.5^2 (z − 0.5) dz = 2.25.
+TEST(HalfPlaneMoments, SquareCutHorizontally) {
+    const Ring r = box(0, 0, 2, 2);
+    const HalfPlaneMoments below = half_plane_moments(r, BendingAxis::X, 0.5, Side::Below);
+    const HalfPlaneMoments above = half_plane_moments(r, BendingAxis::X, 0.5, Side::Above);
+    EXPECT_NEAR(below.area, 1.0, 1e-14);
+    EXPECT_NEAR(below.first_moment, -0.25, 1e-14);
+    EXPECT_NEAR(above.area, 3.0, 1e-14);
+    EXPECT_NEAR(above.first_moment, 2.25, 1e-14);
+}
+
+// Right triangle (0,0), (2,0), (0,2) cut at x = 1 (BendingAxis::Z): left of it a trapezoid of area
+// ∫_0^1 (2 − x) dx = 1.5 and ∫_0^1 (x − 1)(2 − x) dx = −5/6; right: area 0.5, ∫_1^2 (x−1)(2−x) dx = 1/6.
+TEST(HalfPlaneMoments, TriangleCutVertically) {
+    const Ring r = {{0, 0}, {2, 0}, {0, 2}};
+    const HalfPlaneMoments left = half_plane_moments(r, BendingAxis::Z, 1.0, Side::Below);
+    const HalfPlaneMoments right = half_plane_moments(r, BendingAxis::Z, 1.0, Side::Above);
+    EXPECT_NEAR(left.area, 1.5, 1e-14);
+    EXPECT_NEAR(left.first_moment, -5.0 / 6.0, 1e-14);
+    EXPECT_NEAR(right.area, 0.5, 1e-14);
+    EXPECT_NEAR(right.first_moment, 1.0 / 6.0, 1e-14);
+}
+
+// Chord of the same triangle on the line z = t is 2 − t; on x = t it is 2 − t too.
+TEST(ChordLength, TriangleChordsAreLinear) {
+    const Ring r = {{0, 0}, {2, 0}, {0, 2}};
+    EXPECT_NEAR(chord_length(r, BendingAxis::X, 0.0, 2.0, 0.0), 2.0, 1e-14);
+    EXPECT_NEAR(chord_length(r, BendingAxis::X, 0.0, 2.0, 2.0), 0.0, 1e-14);
+    EXPECT_NEAR(chord_length(r, BendingAxis::Z, 0.0, 2.0, 0.5), 1.5, 1e-14);
+}
+
+// ../shared/reference/values.md: ∫∫ d dA over [−a, a] x [−c, c] about its centre, r = √(a²+c²):
+// (2/3)[2acr + a³ ln((c+r)/a) + c³ ln((a+r)/c)].
+double rectangle_distance_integral(double a, double c) {
+    const double r = std::hypot(a, c);
+    return 2.0 / 3.0 * (2.0 * a * c * r + a * a * a * std::log((c + r) / a) + c * c * c * std::log((a + r) / c));
+}
+
+TEST(DistanceIntegral, RectangleAboutItsCentreMatchesClosedForm) {
+    for (auto [a, c] : {std::pair{0.5, 0.5}, {1.0, 0.25}, {0.01, 3.0}, {2.0, 1e-3}}) {
+        const double value = distance_integral(box(-a, -c, a, c), Point{0, 0});
+        EXPECT_LT(test::relative_error(value, rectangle_distance_integral(a, c)), 1e-13) << a << " x " << c;
+    }
+}
+
+// About a corner: the rectangle [0, 2a] x [0, 2c] seen from (0,0) is a quarter of the
+// [−2a, 2a] x [−2c, 2c] rectangle seen from its centre.
+TEST(DistanceIntegral, AboutACornerIsAQuarterOfTheDoubledRectangle) {
+    const double a = 0.3, c = 0.7;
+    const double value = distance_integral(box(0, 0, 2 * a, 2 * c), Point{0, 0});
+    EXPECT_LT(test::relative_error(value, rectangle_distance_integral(2 * a, 2 * c) / 4.0), 1e-13);
+}
+
+// About a point outside: ∫ d dA over the unit square [1,2] x [0,1] about (0,0) equals the
+// quarter-of-doubled-rectangle for [0,2] x [0,1] minus that for [0,1] x [0,1].
+TEST(DistanceIntegral, AboutAnOutsidePointBySubtraction) {
+    const double whole = rectangle_distance_integral(2.0, 1.0) / 4.0;
+    const double left = rectangle_distance_integral(1.0, 1.0) / 4.0;
+    const double value = distance_integral(box(1, 0, 2, 1), Point{0, 0});
+    EXPECT_LT(test::relative_error(value, whole - left), 1e-13);
+}

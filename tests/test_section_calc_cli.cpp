@@ -1,0 +1,162 @@
+// section-calc end to end: the binary is run as a user would, its output parsed and checked.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+
+namespace {
+
+struct CliRun {
+    int exit_code;
+    std::string out;
+    std::string err;
+};
+
+const std::string kSource = PLASCAP_SOURCE_DIR;
+
+CliRun section_calc(const std::string& arguments) {
+    const std::string err_file = ::testing::TempDir() + "section_calc_stderr.txt";
+    const std::string command = std::string("\"") + PLASCAP_SECTION_CALC + "\" " + arguments + " 2>\"" + err_file + "\"";
+    FILE* pipe = popen(command.c_str(), "r");
+    std::string out;
+    char buffer[4096];
+    while (std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) out.append(buffer, n);
+    const int status = pclose(pipe);
+    std::ifstream err_stream(err_file);
+    std::stringstream err;
+    err << err_stream.rdbuf();
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out, err.str()};
+}
+
+std::string example(const std::string& name) { return kSource + "/sections/examples/" + name; }
+
+double relative_error(double value, double reference) { return std::fabs(value - reference) / std::fabs(reference); }
+
+}  // namespace
+
+// The paper's square (Fig. 2.6) through --json: every key present and right.
+TEST(SectionCalc, JsonOfThePaperSquare) {
+    const CliRun run = section_calc("--json \"" + example("paper-square.json") + "\"");
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_EQ(run.err, "");
+    const nlohmann::json j = nlohmann::json::parse(run.out);
+    EXPECT_LT(relative_error(j["N"].get<double>(), 0.01 * 0.01 * 200e6), 1e-12);
+    EXPECT_LT(relative_error(j["Qx"].get<double>(), 0.01 * 0.01 * 100e6), 1e-12);
+    EXPECT_LT(relative_error(j["Qz"].get<double>(), 0.01 * 0.01 * 100e6), 1e-12);
+    EXPECT_LT(relative_error(j["Mx"].get<double>(), 200e6 * 0.01 * 0.01 * 0.01 / 4.0), 1e-12);
+    EXPECT_LT(relative_error(j["Mz"].get<double>(), 200e6 * 0.01 * 0.01 * 0.01 / 4.0), 1e-12);
+    EXPECT_NEAR(j["My"].get<double>(), 38.2597858232, 5e-10);
+    EXPECT_EQ(j["method"], "exact");
+    EXPECT_EQ(j["shear"], "tresca");
+    EXPECT_EQ(j["z_pna"].get<double>(), 0.0);
+}
+
+TEST(SectionCalc, TableShowsEveryCapacity) {
+    const CliRun run = section_calc("\"" + example("t-section.json") + "\"");
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    for (const char* row : {"N ", "Qx ", "Qz ", "Mx ", "Mz ", "My "}) EXPECT_NE(run.out.find(std::string("\n  ") + row), std::string::npos) << row;
+    EXPECT_NE(run.out.find("z = 0.15 m (plastic neutral axis"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("42300"), std::string::npos) << run.out;  // Mx = 235e6 · 180,000 mm³
+}
+
+// --rect B H --fy FY with --shear von-mises and --only: Qx = b·h·fy/√3, nothing else printed.
+TEST(SectionCalc, RectangleShortcutWithShearAndOnly) {
+    const CliRun run = section_calc("--rect 0.1 0.2 --fy 300e6 --shear von-mises --only Qx,Mx --json");
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const nlohmann::json j = nlohmann::json::parse(run.out);
+    EXPECT_LT(relative_error(j["Qx"].get<double>(), 0.02 * 300e6 / std::sqrt(3.0)), 1e-12);
+    EXPECT_LT(relative_error(j["Mx"].get<double>(), 300e6 * 0.1 * 0.04 / 4.0), 1e-12);
+    EXPECT_FALSE(j.contains("N") || j.contains("Qz") || j.contains("Mz") || j.contains("My"));
+    EXPECT_FALSE(j.contains("x_pna") || j.contains("reference"));
+}
+
+// --reference moves the joint point: a corner of the 10 mm square gives a quarter of the 20 mm
+// square's ∫d dA about its centre: My = 100e6 · (2/3)(2√2 + 2·asinh 1)·(0.01)³ / 4.
+TEST(SectionCalc, ReferenceOption) {
+    const CliRun run = section_calc("--rect 0.01 0.01 --fy 200e6 --reference 0.005 0.005 --only My --json");
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const double expected = 100e6 * (2.0 / 3.0) * (2.0 * std::sqrt(2.0) + 2.0 * std::asinh(1.0)) * 1e-6 / 4.0;
+    EXPECT_LT(relative_error(nlohmann::json::parse(run.out)["My"].get<double>(), expected), 1e-12);
+}
+
+TEST(SectionCalc, EveryExampleRuns) {
+    for (const char* name : {"paper-square.json", "rectangle.json", "i-section.json", "hollow-rectangle.json",
+                             "t-section.json", "two-part.json"}) {
+        const CliRun run = section_calc("--json \"" + example(name) + "\"");
+        EXPECT_EQ(run.exit_code, 0) << name << ": " << run.err;
+        EXPECT_GT(nlohmann::json::parse(run.out)["My"].get<double>(), 0.0) << name;
+    }
+}
+
+// Bad command lines: exit 2, one line on stderr, nothing on stdout.
+TEST(SectionCalc, BadCommandLines) {
+    const struct {
+        const char* arguments;
+        const char* message;
+    } cases[] = {
+        {"", "section-calc: error: no section: give FILE or --rect B H --fy FY (see --help)\n"},
+        {"--rect 0.1 0.1", "section-calc: error: --rect needs --fy FY, the yield stress in Pa\n"},
+        {"--rect -0.1 0.1 --fy 1e8", "section-calc: error: --rect: width B [m] must be a positive finite number (got -0.100000)\n"},
+        {"--rect 0.1 0.1 --fy -1e8", "section-calc: error: part 0, material: yield stress fy must be a positive finite number in Pa (got -100000000)\n"},
+        {"--rect 0.1 0.1 --fy 1e8 --only N,Mq", "section-calc: error: unknown capacity 'Mq' (choose from N, Qx, Qz, Mx, Mz, My)\n"},
+        {"--rect 0.1 0.1 --fy 1e8 --shear rankine", "section-calc: error: unknown shear criterion 'rankine' (choose \"tresca\" or \"von-mises\")\n"},
+        {"--rect 0.1 0.1 --fy 1e8 --method magic", "section-calc: error: --method magic: unknown method (available: exact)\n"},
+        {"/nonexistent.json", "section-calc: error: /nonexistent.json: cannot open the file\n"},
+    };
+    for (const auto& c : cases) {
+        const CliRun run = section_calc(c.arguments);
+        EXPECT_EQ(run.exit_code, 2) << c.arguments;
+        EXPECT_EQ(run.err, c.message) << c.arguments;
+        EXPECT_EQ(run.out, "") << c.arguments;
+    }
+    const CliRun unknown_option = section_calc("--frobnicate");
+    EXPECT_EQ(unknown_option.exit_code, 2);
+    EXPECT_EQ(unknown_option.out, "");
+}
+
+// One file per class of bad input: exit 2, one line on stderr naming the file and the problem,
+// nothing on stdout.
+TEST(SectionCalc, BadInputFiles) {
+    const struct {
+        const char* file;
+        const char* message;
+    } cases[] = {
+        {"malformed.json", "malformed JSON: [json.exception.parse_error.101] parse error at line 1, column 63"},
+        {"empty.json", "malformed JSON: [json.exception.parse_error.101] parse error at line 1, column 1"},
+        {"random-bytes.json", "malformed JSON: "},
+        {"not-an-object.json", "section: expected a JSON object with \"parts\", got array"},
+        {"overflowing-number.json", "1e400"},
+        {"wrong-type.json", "parts[0].outer[1][1]: expected a number, got string"},
+        {"unknown-key.json", "parts[0]: unknown key \"hole\""},
+        {"missing-material.json", "parts[0]: no material"},
+        {"unknown-material-name.json", "material: material \"Unobtainium\": named materials need the materials catalogue"},
+        {"no-parts.json", "section: has no parts"},
+        {"too-few-vertices.json", "part 0, outer ring: has 2 distinct vertices; a ring needs at least 3"},
+        {"repeated-vertex.json", "part 0, outer ring, vertex 2: repeats vertex 1"},
+        {"coordinate-out-of-range.json", "part 0, outer ring, vertex 1: coordinate x = 10000000 m is outside the supported range"},
+        {"collinear.json", "part 0, outer ring: has zero area: its vertices are collinear"},
+        {"vanishing-area.json", "part 0, outer ring: is only 1e-300 m across"},
+        {"self-intersecting.json", "part 0, outer ring, vertex 0: is self-intersecting: edge 0-1 meets edge 2-3"},
+        {"hole-outside.json", "part 0, hole 0: lies outside its outer ring"},
+        {"hole-crossing.json", "part 0, hole 0: touches or crosses its outer ring"},
+        {"holes-overlapping.json", "part 0, hole 1: overlaps or touches hole 0 of the same part"},
+        {"parts-overlapping.json", "part 1: overlaps part 0"},
+        {"negative-yield-stress.json", "part 0, material: yield stress fy must be a positive finite number in Pa (got -200000000)"},
+        {"zero-yield-stress.json", "part 0, material: yield stress fy must be a positive finite number in Pa (got 0)"},
+        {"unknown-shear.json", "shear: unknown shear criterion 'rankine'"},
+    };
+    for (const auto& c : cases) {
+        const std::string path = kSource + "/tests/bad-input/" + c.file;
+        const CliRun run = section_calc("\"" + path + "\"");
+        EXPECT_EQ(run.exit_code, 2) << c.file;
+        EXPECT_EQ(run.out, "") << c.file;
+        EXPECT_EQ(run.err.rfind("section-calc: error: " + path + ": ", 0), 0u) << c.file << ": " << run.err;
+        EXPECT_NE(run.err.find(c.message), std::string::npos) << c.file << ": " << run.err;
+        EXPECT_EQ(run.err.find('\n'), run.err.size() - 1) << c.file << ": more than one line: " << run.err;
+    }
+}

@@ -1,0 +1,129 @@
+// One test per validation rule: each bad section is refused with a message that names the
+// problem and where it is.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "plascap/input_error.hpp"
+#include "plascap/sections/shapes.hpp"
+#include "test_support.hpp"
+
+using namespace plascap;
+using plascap::test::box;
+using plascap::test::part;
+using plascap::test::section_of;
+
+namespace {
+
+// The InputError message of validate_section, or "" when the section is accepted.
+std::string refusal(const Section& s) {
+    try {
+        validate_section(s);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+}  // namespace
+
+#define EXPECT_REFUSED(section, text) EXPECT_EQ(refusal(section), text)
+
+TEST(Validation, AcceptsAGoodSection) { EXPECT_EQ(refusal(rectangle_section(0.1, 0.2, 1e8)), ""); }
+
+TEST(Validation, NoParts) { EXPECT_REFUSED(Section{}, "section: has no parts; give at least one part with an outer ring"); }
+
+TEST(Validation, TooFewVertices) {
+    EXPECT_REFUSED(section_of({part({{0, 0}, {1, 0}}, 1e8)}),
+                   "part 0, outer ring: has 2 distinct vertices; a ring needs at least 3");
+    // A closing vertex does not count.
+    EXPECT_REFUSED(section_of({part({{0, 0}, {1, 0}, {0, 0}}, 1e8)}),
+                   "part 0, outer ring: has 2 distinct vertices; a ring needs at least 3");
+}
+
+TEST(Validation, NonFiniteCoordinate) {
+    EXPECT_REFUSED(section_of({part({{0, 0}, {1, 0}, {1, kNaN}, {0, 1}}, 1e8)}),
+                   "part 0, outer ring, vertex 2: coordinate z is not a finite number (nan)");
+    EXPECT_REFUSED(section_of({part(box(0, 0, 1, 1), 1e8, {{{0.2, 0.2}, {INFINITY, 0.2}, {0.5, 0.5}}})}),
+                   "part 0, hole 0, vertex 1: coordinate x is not a finite number (inf)");
+}
+
+TEST(Validation, CoordinateOutOfRange) {
+    EXPECT_REFUSED(section_of({part(box(0, 0, 1, 2e7), 1e8)}),
+                   "part 0, outer ring, vertex 2: coordinate z = 20000000 m is outside the supported range ±1e6 m");
+}
+
+TEST(Validation, RepeatedVertex) {
+    EXPECT_REFUSED(section_of({part({{0, 0}, {1, 0}, {1, 0}, {1, 1}, {0, 1}}, 1e8)}),
+                   "part 0, outer ring, vertex 2: repeats vertex 1");
+}
+
+TEST(Validation, ZeroArea) {
+    EXPECT_REFUSED(section_of({part({{0, 0}, {1, 1}, {2, 2}}, 1e8)}),
+                   "part 0, outer ring: has zero area: its vertices are collinear");
+}
+
+TEST(Validation, VanishingArea) {
+    // Collinear up to the round-off of the coordinates.
+    const std::string nearly = refusal(section_of({part({{0, 0}, {1, 1e-14}, {2, 0}}, 1e8)}));
+    EXPECT_EQ(nearly.rfind("part 0, outer ring: has vanishing area (", 0), 0u) << nearly;
+    // Sides of 1e-300 m.
+    EXPECT_REFUSED(section_of({part(box(0, 0, 1e-300, 1e-300), 1e8)}),
+                   "part 0, outer ring: is only 1e-300 m across; the smallest supported ring is 1e-9 m across");
+}
+
+TEST(Validation, SelfIntersectingRingNamesTheEdges) {
+    EXPECT_REFUSED(section_of({part({{0, 0}, {2, 2}, {2, 0}, {0, 1}}, 1e8)}),
+                   "part 0, outer ring, vertex 0: is self-intersecting: edge 0-1 meets edge 2-3");
+    // A symmetric bow tie, whose lobes cancel to zero area, is still called self-intersecting.
+    EXPECT_REFUSED(section_of({part({{0, 0}, {1, 1}, {1, 0}, {0, 1}}, 1e8)}),
+                   "part 0, outer ring, vertex 0: is self-intersecting: edge 0-1 meets edge 2-3");
+    // Touching itself at a vertex (figure of eight through (1, 1)).
+    const std::string touch =
+        refusal(section_of({part({{0, 0}, {1, 1}, {2, 0}, {2, 2}, {1, 1}, {0, 2}}, 1e8)}));
+    EXPECT_NE(touch.find("is self-intersecting"), std::string::npos) << touch;
+}
+
+TEST(Validation, HoleOutsideItsOuterRing) {
+    EXPECT_REFUSED(section_of({part(box(0, 0, 1, 1), 1e8, {box(2, 2, 3, 3)})}),
+                   "part 0, hole 0: lies outside its outer ring; holes must lie strictly inside it");
+}
+
+TEST(Validation, HoleTouchingOrCrossingItsOuterRing) {
+    const std::string message = "part 0, hole 0: touches or crosses its outer ring; holes must lie strictly inside it";
+    EXPECT_REFUSED(section_of({part(box(0, 0, 1, 1), 1e8, {box(0.5, 0.5, 1.5, 0.8)})}), message);   // crosses
+    EXPECT_REFUSED(section_of({part(box(0, 0, 1, 1), 1e8, {box(0.2, 0.0, 0.4, 0.5)})}), message);   // shares an edge
+    EXPECT_REFUSED(section_of({part(box(0, 0, 1, 1), 1e8, {{{0.5, 0.0}, {0.7, 0.3}, {0.3, 0.3}}})}), message);  // vertex on edge
+    EXPECT_REFUSED(section_of({part(box(0, 0, 1, 1), 1e8, {{{0.0, 0.0}, {0.5, 0.2}, {0.2, 0.5}}})}), message);  // shared vertex
+}
+
+TEST(Validation, HolesOverlapping) {
+    EXPECT_REFUSED(section_of({part(box(0, 0, 1, 1), 1e8, {box(0.1, 0.1, 0.5, 0.5), box(0.4, 0.4, 0.8, 0.8)})}),
+                   "part 0, hole 1: overlaps or touches hole 0 of the same part");
+    EXPECT_REFUSED(section_of({part(box(0, 0, 1, 1), 1e8, {box(0.1, 0.1, 0.9, 0.9), box(0.3, 0.3, 0.6, 0.6)})}),
+                   "part 0, hole 1: overlaps or touches hole 0 of the same part");  // one inside the other
+}
+
+TEST(Validation, PartsOverlapping) {
+    EXPECT_REFUSED(section_of({part(box(0, 0, 1, 1), 1e8), part(box(2, 0, 3, 1), 1e8), part(box(0.5, 0.5, 1.5, 1.5), 1e8)}),
+                   "part 2: overlaps part 0 (their interiors intersect; sharing an edge is allowed)");
+    // A part inside another's hole does not overlap it; parts sharing an edge or a corner are fine.
+    EXPECT_EQ(refusal(section_of({part(box(0, 0, 3, 3), 1e8, {box(1, 1, 2, 2)}), part(box(1.2, 1.2, 1.8, 1.8), 1e8)})), "");
+    EXPECT_EQ(refusal(section_of({part(box(0, 0, 1, 1), 1e8), part(box(1, 0, 2, 1), 1e8), part(box(2, 1, 3, 2), 1e8)})), "");
+}
+
+TEST(Validation, YieldStressMustBePositiveAndFinite) {
+    EXPECT_REFUSED(section_of({part(box(0, 0, 1, 1), 1e8), part(box(1, 0, 2, 1), -2e8)}),
+                   "part 1, material: yield stress fy must be a positive finite number in Pa (got -200000000)");
+    EXPECT_REFUSED(section_of({part(box(0, 0, 1, 1), kNaN)}),
+                   "part 0, material: yield stress fy must be a positive finite number in Pa (got nan)");
+}
+
+TEST(Validation, JointPointMustBeFinite) {
+    Section s = rectangle_section(0.1, 0.1, 1e8);
+    s.reference = Point{kNaN, 0.0};
+    EXPECT_REFUSED(s, "reference: the joint point (nan, 0) must be finite and within ±1e6 m");
+}
