@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "plascap/sections/ring_integrals.hpp"
@@ -47,11 +48,25 @@ TEST(HalfPlaneMoments, TriangleCutVertically) {
 }
 
 // Chord of the same triangle on the line z = t is 2 − t; on x = t it is 2 − t too.
-TEST(ChordLength, TriangleChordsAreLinear) {
+TEST(ChordLengths, TriangleChordsAreLinear) {
     const Ring r = {{0, 0}, {2, 0}, {0, 2}};
-    EXPECT_NEAR(chord_length(r, BendingAxis::X, 0.0, 2.0, 0.0), 2.0, 1e-14);
-    EXPECT_NEAR(chord_length(r, BendingAxis::X, 0.0, 2.0, 2.0), 0.0, 1e-14);
-    EXPECT_NEAR(chord_length(r, BendingAxis::Z, 0.0, 2.0, 0.5), 1.5, 1e-14);
+    const Chords horizontal = chord_lengths(r, BendingAxis::X, 0.0, 2.0);
+    EXPECT_NEAR(horizontal.at_a, 2.0, 1e-14);
+    EXPECT_NEAR(horizontal.at_b, 0.0, 1e-14);
+    const Chords vertical = chord_lengths(r, BendingAxis::Z, 0.0, 2.0);
+    EXPECT_NEAR(vertical.at_a, 2.0, 1e-14);
+    EXPECT_NEAR(vertical.at_b, 0.0, 1e-14);
+}
+
+// A clockwise hole subtracts its chord: square [0,4]² with hole [1,3]², on the piece z ∈ [1, 3]
+// the chord is 4 − 2 = 2 at both ends.
+TEST(ChordLengths, HoleSubtracts) {
+    Ring hole = box(1, 1, 3, 3);
+    std::reverse(hole.begin(), hole.end());
+    const Chords outer = chord_lengths(box(0, 0, 4, 4), BendingAxis::X, 1.0, 3.0);
+    const Chords inner = chord_lengths(hole, BendingAxis::X, 1.0, 3.0);
+    EXPECT_NEAR(outer.at_a + inner.at_a, 2.0, 1e-14);
+    EXPECT_NEAR(outer.at_b + inner.at_b, 2.0, 1e-14);
 }
 
 // ../shared/reference/values.md: ∫∫ d dA over [−a, a] x [−c, c] about its centre, r = √(a²+c²):

@@ -77,8 +77,8 @@ HalfPlaneMoments half_plane_moments(const Ring& ring, BendingAxis axis, double t
     return {sigma * flip * area, sigma * moment};
 }
 
-double chord_length(const Ring& ring, BendingAxis axis, double a, double b, double t) {
-    double length = 0.0;
+Chords chord_lengths(const Ring& ring, BendingAxis axis, double a, double b) {
+    Chords chords;
     const std::size_t n = ring.size();
     for (std::size_t i = 0; i < n; ++i) {
         const LevelPoint p = to_level(ring[i], axis, 0.0);
@@ -86,31 +86,44 @@ double chord_length(const Ring& ring, BendingAxis axis, double a, double b, doub
         const double lo = std::fmin(p.u, q.u);
         const double hi = std::fmax(p.u, q.u);
         if (lo == hi || lo > a || hi < b) continue;  // edge does not span [a, b]
-        const double v = p.v + (q.v - p.v) * ((t - p.u) / (q.u - p.u));
-        length += q.u > p.u ? v : -v;  // upward edges bound the chord on one side, downward on the other
+        const double slope = (q.v - p.v) / (q.u - p.u);
+        const double v_a = p.v + slope * (a - p.u);
+        const double v_b = p.v + slope * (b - p.u);
+        // Upward edges bound the chord on one side, downward edges on the other.
+        chords.at_a += q.u > p.u ? v_a : -v_a;
+        chords.at_b += q.u > p.u ? v_b : -v_b;
     }
-    return orientation_factor(axis) * length;
+    chords.at_a *= orientation_factor(axis);
+    chords.at_b *= orientation_factor(axis);
+    return chords;
 }
 
 double distance_integral(const Ring& ring, Point c) {
     double sum = 0.0;
     const std::size_t n = ring.size();
+    double ax = ring[n - 1].x - c.x, az = ring[n - 1].z - c.z;
+    double r0 = std::sqrt(ax * ax + az * az);
     for (std::size_t i = 0; i < n; ++i) {
-        const double ax = ring[i].x - c.x, az = ring[i].z - c.z;
-        const Point q = ring[(i + 1) % n];
-        const double bx = q.x - c.x, bz = q.z - c.z;
+        const double bx = ring[i].x - c.x, bz = ring[i].z - c.z;
+        const double r1 = std::sqrt(bx * bx + bz * bz);
         const double dx = bx - ax, dz = bz - az;
-        const double length = std::hypot(dx, dz);
         const double cross = ax * bz - az * bx;  // twice the signed area of the fan triangle
-        if (length == 0.0 || cross == 0.0) continue;  // edge on a line through c: zero area
-        const double h = std::fabs(cross) / length;
-        const double s0 = (ax * dx + az * dz) / length;
-        const double s1 = (bx * dx + bz * dz) / length;
-        const double r0 = std::hypot(ax, az);
-        const double r1 = std::hypot(bx, bz);
-        // ∫∫_tri r dA = ∫ ρ(φ)³/3 dφ with ρ = h·sec φ, written with s = h·tan φ and asinh(s/h) = ln((s + r)/h).
-        const double triangle = h / 6.0 * (s1 * r1 - s0 * r0 + h * h * (std::asinh(s1 / h) - std::asinh(s0 / h)));
-        sum += cross > 0.0 ? triangle : -triangle;
+        const double length_squared = dx * dx + dz * dz;
+        if (cross != 0.0 && length_squared != 0.0) {  // else: the edge lies on a line through c
+            const double inverse_length = 1.0 / std::sqrt(length_squared);
+            const double h = std::fabs(cross) * inverse_length;
+            const double s0 = (ax * dx + az * dz) * inverse_length;
+            const double s1 = (bx * dx + bz * dz) * inverse_length;
+            // ∫∫_tri r dA = ∫ ρ(φ)³/3 dφ with ρ = h·sec φ (∫ sec³ = ½(sec·tan + ln(sec + tan))), in s = h·tan φ:
+            // (h/6)[s·r + h²·ln(s + r)] between the edge ends. s + r is written h²/(r − s) for s < 0 so
+            // that it never cancels (r² = s² + h²).
+            const double g0 = s0 >= 0.0 ? s0 + r0 : h * h / (r0 - s0);
+            const double g1 = s1 >= 0.0 ? s1 + r1 : h * h / (r1 - s1);
+            const double log_ratio = g0 > 0.0 && g1 > 0.0 ? std::log(g1 / g0) : 0.0;  // 0 only if h² underflows
+            const double triangle = h / 6.0 * (s1 * r1 - s0 * r0 + h * h * log_ratio);
+            sum += cross > 0.0 ? triangle : -triangle;
+        }
+        ax = bx, az = bz, r0 = r1;
     }
     return sum;
 }

@@ -33,10 +33,14 @@ struct HalfPlaneMoments {
 // the line adds nothing (d(level) = 0 on it), so the integrals are sums over clipped edges.
 HalfPlaneMoments half_plane_moments(const Ring& ring, BendingAxis axis, double t, Side side);
 
-// d/dt of the area below level t, for t in [a, b] where no vertex level lies strictly inside
-// (a, b): the chord length of the ring on the line, linear in t there. Evaluated exactly at the
-// ends a or b from the edges spanning the interval.
-double chord_length(const Ring& ring, BendingAxis axis, double a, double b, double t);
+// d/dt of the area below level t — the chord length of the ring on the line — at both ends of
+// [a, b], where no vertex level lies strictly inside (a, b) so the chord is linear in t. Exact:
+// evaluated from the edges spanning the interval.
+struct Chords {
+    double at_a = 0.0;
+    double at_b = 0.0;
+};
+Chords chord_lengths(const Ring& ring, BendingAxis axis, double a, double b);
 
 // ∫ |p − c| dA: the paper's eq. 2.14 integral about the joint point c, by the per-edge closed form
 // of the triangle fan from c: ∫∫_tri r dA = (h/6)[s r + h² asinh(s/h)] evaluated between the edge
