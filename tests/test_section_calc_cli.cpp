@@ -8,6 +8,7 @@
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include <unistd.h>
 
 namespace {
 
@@ -20,7 +21,8 @@ struct CliRun {
 const std::string kSource = PLASCAP_SOURCE_DIR;
 
 CliRun section_calc(const std::string& arguments) {
-    const std::string err_file = ::testing::TempDir() + "section_calc_stderr.txt";
+    // One stderr file per process: ctest runs the test cases in parallel.
+    const std::string err_file = ::testing::TempDir() + "section_calc_stderr_" + std::to_string(getpid()) + ".txt";
     const std::string command = std::string("\"") + PLASCAP_SECTION_CALC + "\" " + arguments + " 2>\"" + err_file + "\"";
     FILE* pipe = popen(command.c_str(), "r");
     std::string out;
