@@ -48,6 +48,22 @@ double signed_area(const Ring& ring) {
     return ring_moments(local).area;
 }
 
+struct Box {
+    double min_x, max_x, min_z, max_z;
+    bool overlaps(const Box& o) const {
+        return min_x < o.max_x && o.min_x < max_x && min_z < o.max_z && o.min_z < max_z;
+    }
+};
+
+Box bounding_box(const Ring& ring) {
+    Box b{ring[0].x, ring[0].x, ring[0].z, ring[0].z};
+    for (Point p : ring) {
+        b.min_x = std::min(b.min_x, p.x), b.max_x = std::max(b.max_x, p.x);
+        b.min_z = std::min(b.min_z, p.z), b.max_z = std::max(b.max_z, p.z);
+    }
+    return b;
+}
+
 // Drops the closing vertex, then checks what a ring must be on its own: enough vertices,
 // finite and in-range coordinates, no repeated neighbours, non-vanishing area, simple.
 Ring checked_ring(Ring ring, const RingId& id) {
@@ -68,12 +84,8 @@ Ring checked_ring(Ring ring, const RingId& id) {
         if (same_point(ring[i], ring[next]))
             fail(id.vertex(next), "repeats vertex " + std::to_string(i));
     }
-    double min_x = ring[0].x, max_x = ring[0].x, min_z = ring[0].z, max_z = ring[0].z;
-    for (Point p : ring) {
-        min_x = std::min(min_x, p.x), max_x = std::max(max_x, p.x);
-        min_z = std::min(min_z, p.z), max_z = std::max(max_z, p.z);
-    }
-    const double extent = std::max(max_x - min_x, max_z - min_z);
+    const Box box = bounding_box(ring);
+    const double extent = std::max(box.max_x - box.min_x, box.max_z - box.min_z);
     if (extent < kMinExtent)
         fail(id.name(), "is only " + number(extent) + " m across; the smallest supported ring is 1e-9 m across");
     if (!detail::ring_is_simple(ring)) {
@@ -116,22 +128,6 @@ void check_holes(const Part& part, std::size_t p) {
                 fail(id.name(), "overlaps or touches hole " + std::to_string(g) + " of the same part");
         }
     }
-}
-
-struct Box {
-    double min_x, max_x, min_z, max_z;
-    bool overlaps(const Box& o) const {
-        return min_x < o.max_x && o.min_x < max_x && min_z < o.max_z && o.min_z < max_z;
-    }
-};
-
-Box bounding_box(const Ring& ring) {
-    Box b{ring[0].x, ring[0].x, ring[0].z, ring[0].z};
-    for (Point p : ring) {
-        b.min_x = std::min(b.min_x, p.x), b.max_x = std::max(b.max_x, p.x);
-        b.min_z = std::min(b.min_z, p.z), b.max_z = std::max(b.max_z, p.z);
-    }
-    return b;
 }
 
 void check_parts_apart(const std::vector<Part>& parts) {
