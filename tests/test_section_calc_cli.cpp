@@ -103,7 +103,7 @@ TEST(SectionCalc, BadCommandLines) {
     } cases[] = {
         {"", "section-calc: error: no section: give FILE or --rect B H --fy FY (see --help)\n"},
         {"--rect 0.1 0.1", "section-calc: error: --rect needs --fy FY, the yield stress in Pa\n"},
-        {"--rect -0.1 0.1 --fy 1e8", "section-calc: error: --rect: width B [m] must be a positive finite number (got -0.100000)\n"},
+        {"--rect -0.1 0.1 --fy 1e8", "section-calc: error: --rect: width B [m] must be a positive finite number (got -0.1)\n"},
         {"--rect 0.1 0.1 --fy -1e8", "section-calc: error: part 0, material: yield stress fy must be a positive finite number in Pa (got -100000000)\n"},
         {"--rect 0.1 0.1 --fy 1e8 --only N,Mq", "section-calc: error: unknown capacity 'Mq' (choose from N, Qx, Qz, Mx, Mz, My)\n"},
         {"--rect 0.1 0.1 --fy 1e8 --shear rankine", "section-calc: error: unknown shear criterion 'rankine' (choose \"tresca\" or \"von-mises\")\n"},

@@ -2,6 +2,7 @@
 // Exit codes: 0 success, 2 bad input (one message on stderr), 1 internal failure.
 #include <CLI/CLI.hpp>
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 #include <optional>
 #include <string>
@@ -39,9 +40,15 @@ void add_options(CLI::App& app, Options& o) {
     app.set_version_flag("--version", "section-calc (plascap) 0.1.0");
 }
 
+std::string number(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.10g", value);
+    return text;
+}
+
 void require_positive(double value, const std::string& what) {
     if (!std::isfinite(value) || value <= 0.0)
-        throw plascap::InputError(what + " must be a positive finite number (got " + std::to_string(value) + ")");
+        throw plascap::InputError(what + " must be a positive finite number (got " + number(value) + ")");
 }
 
 plascap::Section load_section(const Options& o, std::string& source) {
@@ -51,7 +58,7 @@ plascap::Section load_section(const Options& o, std::string& source) {
         if (!o.fy) throw plascap::InputError("--rect needs --fy FY, the yield stress in Pa");
         require_positive(o.rect[0], "--rect: width B [m]");
         require_positive(o.rect[1], "--rect: height H [m]");
-        source = "--rect " + std::to_string(o.rect[0]) + " x " + std::to_string(o.rect[1]) + " m";
+        source = "--rect " + number(o.rect[0]) + " x " + number(o.rect[1]) + " m";
         return plascap::rectangle_section(o.rect[0], o.rect[1], *o.fy);
     }
     if (o.fy) throw plascap::InputError("--fy goes with --rect; a section file gives its own materials");
