@@ -89,22 +89,33 @@ TEST(Validation, SelfIntersectingRingNamesTheEdges) {
 
 TEST(Validation, HoleOutsideItsOuterRing) {
     EXPECT_REFUSED(section_of({part(box(0, 0, 1, 1), 1e8, {box(2, 2, 3, 3)})}),
-                   "part 0, hole 0: lies outside its outer ring; holes must lie strictly inside it");
+                   "part 0, hole 0, vertex 0: lies outside its outer ring; holes must lie strictly inside it");
 }
 
+// Touching rings are named with the two edges that meet, counted as the user gave them.
 TEST(Validation, HoleTouchingOrCrossingItsOuterRing) {
-    const std::string message = "part 0, hole 0: touches or crosses its outer ring; holes must lie strictly inside it";
-    EXPECT_REFUSED(section_of({part(box(0, 0, 1, 1), 1e8, {box(0.5, 0.5, 1.5, 0.8)})}), message);   // crosses
-    EXPECT_REFUSED(section_of({part(box(0, 0, 1, 1), 1e8, {box(0.2, 0.0, 0.4, 0.5)})}), message);   // shares an edge
-    EXPECT_REFUSED(section_of({part(box(0, 0, 1, 1), 1e8, {{{0.5, 0.0}, {0.7, 0.3}, {0.3, 0.3}}})}), message);  // vertex on edge
-    EXPECT_REFUSED(section_of({part(box(0, 0, 1, 1), 1e8, {{{0.0, 0.0}, {0.5, 0.2}, {0.2, 0.5}}})}), message);  // shared vertex
+    auto message = [](int hole_edge, int outer_edge) {
+        return "part 0, hole 0, vertex " + std::to_string(hole_edge) + ": touches or crosses its outer ring (its edge " +
+               std::to_string(hole_edge) + "-" + std::to_string(hole_edge + 1) + " meets edge " +
+               std::to_string(outer_edge) + "-" + std::to_string(outer_edge + 1) +
+               " of the outer ring); holes must lie strictly inside it";
+    };
+    EXPECT_REFUSED(section_of({part(box(0, 0, 1, 1), 1e8, {box(0.5, 0.5, 1.5, 0.8)})}), message(0, 1));  // crosses
+    EXPECT_REFUSED(section_of({part(box(0, 0, 1, 1), 1e8, {box(0.2, 0.0, 0.4, 0.5)})}), message(0, 0));  // shares an edge
+    EXPECT_REFUSED(section_of({part(box(0, 0, 1, 1), 1e8, {{{0.3, 0.3}, {0.5, 0.0}, {0.7, 0.3}}})}), message(0, 0));  // vertex on edge
+    EXPECT_REFUSED(section_of({part(box(0, 0, 1, 1), 1e8, {{{0.2, 0.5}, {0.0, 0.0}, {0.5, 0.2}}})}), message(0, 0));  // shared vertex
+    // A clockwise hole is named in the order given, too: reversed, the crossing edge is 2-3.
+    EXPECT_REFUSED(section_of({part(box(0, 0, 1, 1), 1e8, {{{0.5, 0.5}, {0.5, 0.8}, {1.5, 0.8}, {1.5, 0.5}}})}),
+                   message(1, 1));
 }
 
 TEST(Validation, HolesOverlapping) {
     EXPECT_REFUSED(section_of({part(box(0, 0, 1, 1), 1e8, {box(0.1, 0.1, 0.5, 0.5), box(0.4, 0.4, 0.8, 0.8)})}),
-                   "part 0, hole 1: overlaps or touches hole 0 of the same part");
+                   "part 0, hole 1, vertex 0: overlaps or touches hole 0 of the same part (its edge 0-1 meets edge 1-2 of hole 0)");
     EXPECT_REFUSED(section_of({part(box(0, 0, 1, 1), 1e8, {box(0.1, 0.1, 0.9, 0.9), box(0.3, 0.3, 0.6, 0.6)})}),
-                   "part 0, hole 1: overlaps or touches hole 0 of the same part");  // one inside the other
+                   "part 0, hole 1, vertex 0: overlaps or touches hole 0 of the same part");  // inside the other
+    EXPECT_REFUSED(section_of({part(box(0, 0, 1, 1), 1e8, {box(0.3, 0.3, 0.6, 0.6), box(0.1, 0.1, 0.9, 0.9)})}),
+                   "part 0, hole 1: overlaps or touches hole 0 of the same part (which lies inside it)");
 }
 
 TEST(Validation, PartsOverlapping) {

@@ -94,6 +94,19 @@ std::optional<std::pair<std::size_t, std::size_t>> find_intersecting_edges(const
     return std::nullopt;
 }
 
+std::optional<std::pair<std::size_t, std::size_t>> find_touching_edges(const Ring& a, const Ring& b,
+                                                                       std::size_t max_vertices) {
+    if (a.size() + b.size() > max_vertices) return std::nullopt;
+    const std::vector<Epick::Point_2> p = to_points<Epick>(a);
+    const std::vector<Epick::Point_2> q = to_points<Epick>(b);
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const Epick::Segment_2 edge_a(p[i], p[(i + 1) % p.size()]);
+        for (std::size_t j = 0; j < q.size(); ++j)
+            if (CGAL::do_intersect(edge_a, Epick::Segment_2(q[j], q[(j + 1) % q.size()]))) return std::make_pair(i, j);
+    }
+    return std::nullopt;
+}
+
 bool any_rings_touch(const std::vector<const Ring*>& rings) {
     if (share_a_vertex(rings)) return true;  // the sweep below ignores contacts at segment ends
     std::vector<SegmentTraits::Curve_2> segments;

@@ -28,6 +28,11 @@ bool rings_touch(const Ring& a, const Ring& b);
 // rings_touch() names the pair.
 bool any_rings_touch(const std::vector<const Ring*>& rings);
 
+// For two rings that touch, with at most `max_vertices` vertices together: an edge i of `a` and an
+// edge j of `b` that have a point in common. O(n·m): messages only.
+std::optional<std::pair<std::size_t, std::size_t>> find_touching_edges(const Ring& a, const Ring& b,
+                                                                       std::size_t max_vertices);
+
 // True when p is strictly inside the simple ring.
 bool strictly_inside(const Ring& ring, Point p);
 

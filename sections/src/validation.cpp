@@ -109,6 +109,19 @@ void orient(Ring& ring, bool counter_clockwise) {
     if ((signed_area(ring) > 0.0) != counter_clockwise) std::reverse(ring.begin(), ring.end());
 }
 
+// Ring `ring` (named by `id`) touches `other`: say so, naming the two edges where the search is
+// affordable, then the rule.
+[[noreturn]] void fail_touching(const Ring& ring, const RingId& id, const Ring& other, const std::string& other_name,
+                                const std::string& what, const std::string& rule) {
+    const auto edges = detail::find_touching_edges(ring, other, kMaxVerticesToLocate);
+    if (!edges) fail(id.name(), what + rule);
+    fail(id.vertex(edges->first), what + " (its edge " + std::to_string(edges->first) + "-" +
+                                      std::to_string((edges->first + 1) % ring.size()) + " meets edge " +
+                                      std::to_string(edges->second) + "-" +
+                                      std::to_string((edges->second + 1) % other.size()) + " of " + other_name + ")" +
+                                      rule);
+}
+
 // Holes strictly inside the outer ring and apart from each other.
 void check_holes(const Part& part, std::size_t p) {
     if (part.holes.empty()) return;
@@ -118,14 +131,16 @@ void check_holes(const Part& part, std::size_t p) {
     for (std::size_t h = 0; h < part.holes.size(); ++h) {
         const RingId id{p, static_cast<int>(h)};
         if (touching && detail::rings_touch(part.outer, part.holes[h]))
-            fail(id.name(), "touches or crosses its outer ring; holes must lie strictly inside it");
+            fail_touching(part.holes[h], id, part.outer, "the outer ring", "touches or crosses its outer ring",
+                          "; holes must lie strictly inside it");
         if (!detail::strictly_inside(part.outer, part.holes[h][0]))
-            fail(id.name(), "lies outside its outer ring; holes must lie strictly inside it");
+            fail(id.vertex(0), "lies outside its outer ring; holes must lie strictly inside it");
         for (std::size_t g = 0; g < h; ++g) {
-            if ((touching && detail::rings_touch(part.holes[g], part.holes[h])) ||
-                detail::strictly_inside(part.holes[g], part.holes[h][0]) ||
-                detail::strictly_inside(part.holes[h], part.holes[g][0]))
-                fail(id.name(), "overlaps or touches hole " + std::to_string(g) + " of the same part");
+            const std::string overlap = "overlaps or touches hole " + std::to_string(g) + " of the same part";
+            if (touching && detail::rings_touch(part.holes[g], part.holes[h]))
+                fail_touching(part.holes[h], id, part.holes[g], "hole " + std::to_string(g), overlap, "");
+            if (detail::strictly_inside(part.holes[g], part.holes[h][0])) fail(id.vertex(0), overlap);
+            if (detail::strictly_inside(part.holes[h], part.holes[g][0])) fail(id.name(), overlap + " (which lies inside it)");
         }
     }
 }
@@ -159,12 +174,11 @@ ValidSection validate_section(const Section& section) {
         const Part& given = section.parts[p];
         validate_material(given.material, "part " + std::to_string(p) + ", material");
         Part part{checked_ring(given.outer, {p, -1}), {}, given.material};
-        orient(part.outer, true);
-        for (std::size_t h = 0; h < given.holes.size(); ++h) {
+        for (std::size_t h = 0; h < given.holes.size(); ++h)
             part.holes.push_back(checked_ring(given.holes[h], {p, static_cast<int>(h)}));
-            orient(part.holes.back(), false);
-        }
-        check_holes(part, p);
+        check_holes(part, p);  // before orienting, so that messages count vertices as given
+        orient(part.outer, true);
+        for (Ring& hole : part.holes) orient(hole, false);
         valid.parts_.push_back(std::move(part));
     }
     check_parts_apart(valid.parts_);
