@@ -7,7 +7,7 @@
 #include <cmath>
 #include <random>
 
-#include "plascap/sections/neutral_axis.hpp"
+#include "plascap/sections/plastic_bending.hpp"
 #include "test_support.hpp"
 
 using namespace plascap;
@@ -65,11 +65,13 @@ TEST(RandomSections, NeutralAxisBalancesAndMinimises) {
             ASSERT_TRUE(std::isfinite(*c.get(k)) && *c.get(k) > 0.0) << trial << " " << to_string(k);
         }
         for (BendingAxis axis : {BendingAxis::X, BendingAxis::Z}) {
-            const double t = plastic_neutral_axis(*valid, axis);
+            const PlasticBending bending = plastic_bending(*valid, axis);
+            const double t = bending.axis;
             const double below = yield_force(*valid, axis, t, Side::Below);
             const double above = yield_force(*valid, axis, t, Side::Above);
             ASSERT_LE(std::fabs(below - above), 1e-12 * (below + above)) << "trial " << trial;
             const double at_axis = absolute_moment(*valid, axis, t);
+            ASSERT_LE(std::fabs(bending.moment - at_axis), 1e-12 * at_axis) << "trial " << trial;
             for (double shift : {-1e-3, 1e-3, -0.1, 0.1})
                 ASSERT_GE(absolute_moment(*valid, axis, t + shift) * (1.0 + 1e-13), at_axis) << "trial " << trial;
         }

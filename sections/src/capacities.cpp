@@ -1,6 +1,6 @@
 #include "plascap/sections/capacities.hpp"
 
-#include "plascap/sections/neutral_axis.hpp"
+#include "plascap/sections/plastic_bending.hpp"
 #include "plascap/sections/ring_integrals.hpp"
 
 namespace plascap {
@@ -29,22 +29,6 @@ PartTotals sum_parts(const ValidSection& section) {
         totals.moments.Sz += m.Sz;
     }
     return totals;
-}
-
-// ∫ fy·|level − t| dA about the plastic neutral axis t (eqs. 2.12, 2.13): the first moments of
-// both sides about t, each of one sign, so the sum has no cancellation.
-double plastic_moment(const ValidSection& section, BendingAxis axis, double t) {
-    double moment = 0.0;
-    for (const Part& part : section.parts()) {
-        double above = half_plane_moments(part.outer, axis, t, Side::Above).first_moment;
-        double below = half_plane_moments(part.outer, axis, t, Side::Below).first_moment;
-        for (const Ring& hole : part.holes) {
-            above += half_plane_moments(hole, axis, t, Side::Above).first_moment;
-            below += half_plane_moments(hole, axis, t, Side::Below).first_moment;
-        }
-        moment += part.material.fy * (above - below);
-    }
-    return moment;
 }
 
 // ∫ τy·|p − c| dA (eq. 2.14), c in local coordinates.
@@ -84,14 +68,14 @@ Capacities compute_capacities(const ValidSection& section, CapacitySet wanted) {
     if (wanted.contains(Capacity::Qx)) result.Qx = totals.shear_force;
     if (wanted.contains(Capacity::Qz)) result.Qz = totals.shear_force;
     if (wanted.contains(Capacity::Mx)) {
-        const double t = plastic_neutral_axis(section, BendingAxis::X);
-        result.Mx = plastic_moment(section, BendingAxis::X, t);
-        result.z_pna = t + section.local_origin().z;
+        const PlasticBending bending = plastic_bending(section, BendingAxis::X);  // eq. 2.12
+        result.Mx = bending.moment;
+        result.z_pna = bending.axis + section.local_origin().z;
     }
     if (wanted.contains(Capacity::Mz)) {
-        const double t = plastic_neutral_axis(section, BendingAxis::Z);
-        result.Mz = plastic_moment(section, BendingAxis::Z, t);
-        result.x_pna = t + section.local_origin().x;
+        const PlasticBending bending = plastic_bending(section, BendingAxis::Z);  // eq. 2.13
+        result.Mz = bending.moment;
+        result.x_pna = bending.axis + section.local_origin().x;
     }
     if (wanted.contains(Capacity::My)) {
         const Point c = section.reference() ? section.to_local(*section.reference()) : local_centroid;

@@ -1,7 +1,9 @@
 #include "plascap/sections/ring_integrals.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 
 namespace plascap {
 namespace {
@@ -52,29 +54,52 @@ RingMoments ring_moments(const Ring& ring) {
     return m;
 }
 
-HalfPlaneMoments half_plane_moments(const Ring& ring, BendingAxis axis, double t, Side side) {
-    // Flip u for the upper side so that "kept" is always u <= 0; flip the results back.
-    const double flip = side == Side::Below ? 1.0 : -1.0;
-    double area = 0.0;
-    double moment = 0.0;
+LevelCut cut_at(const Ring& ring, BendingAxis axis, double t) {
+    LevelCut cut;
+    cut.vertex_below = -std::numeric_limits<double>::infinity();
+    cut.vertex_above = std::numeric_limits<double>::infinity();
+    double area_below = 0.0, moment_below = 0.0, area_above = 0.0, moment_above = 0.0;
     const std::size_t n = ring.size();
     for (std::size_t i = 0; i < n; ++i) {
-        LevelPoint a = to_level(ring[i], axis, t);
-        LevelPoint b = to_level(ring[(i + 1) % n], axis, t);
-        a.u *= flip;
-        b.u *= flip;
+        const double level = level_of(ring[i], axis);
+        if (level <= t) cut.vertex_below = std::max(cut.vertex_below, level);
+        else cut.vertex_above = std::min(cut.vertex_above, level);
+
+        const LevelPoint a = to_level(ring[i], axis, t);
+        const LevelPoint b = to_level(ring[(i + 1) % n], axis, t);
         if (a.u <= 0.0 && b.u <= 0.0) {
-            add_segment(a, b, area, moment);
-        } else if (a.u < 0.0) {
-            add_segment(a, crossing(a, b), area, moment);
-        } else if (b.u < 0.0) {
-            add_segment(crossing(a, b), b, area, moment);
+            add_segment(a, b, area_below, moment_below);
+        } else if (a.u >= 0.0 && b.u >= 0.0) {
+            add_segment(a, b, area_above, moment_above);
+        } else {  // strictly crossing the line
+            const LevelPoint c = crossing(a, b);
+            if (a.u < 0.0) {
+                add_segment(a, c, area_below, moment_below);
+                add_segment(c, b, area_above, moment_above);
+            } else {
+                add_segment(a, c, area_above, moment_above);
+                add_segment(c, b, area_below, moment_below);
+            }
+            // Upward edges bound the chord on one side, downward edges on the other.
+            const double direction = b.u > a.u ? 1.0 : -1.0;
+            cut.chord += direction * c.v;
+            cut.chord_slope += direction * (b.v - a.v) / (b.u - a.u);
         }
     }
-    // With u flipped, ∮ v du and ∮ v u du change sign and sign respectively:
-    // area = σ·flip·∮ v du', first moment = σ·∮ v u' du' (u = flip·u').
     const double sigma = orientation_factor(axis);
-    return {sigma * flip * area, sigma * moment};
+    cut.area_below = sigma * area_below;
+    cut.area_above = sigma * area_above;
+    cut.moment_below = sigma * moment_below;
+    cut.moment_above = sigma * moment_above;
+    cut.chord *= sigma;
+    cut.chord_slope *= sigma;
+    return cut;
+}
+
+HalfPlaneMoments half_plane_moments(const Ring& ring, BendingAxis axis, double t, Side side) {
+    const LevelCut cut = cut_at(ring, axis, t);
+    return side == Side::Below ? HalfPlaneMoments{cut.area_below, cut.moment_below}
+                               : HalfPlaneMoments{cut.area_above, cut.moment_above};
 }
 
 Chords chord_lengths(const Ring& ring, BendingAxis axis, double a, double b) {

@@ -22,6 +22,22 @@ struct RingMoments {
 // arbitrary moments of polygons", 1996).
 RingMoments ring_moments(const Ring& ring);
 
+// The ring seen from the line level = t: what lies below and above it, and how the line cuts it.
+// By Green's theorem the cut along the line adds nothing to either side (d(level) = 0 on it), so
+// every integral is a sum over the ring's edges clipped to one side, each exact.
+struct LevelCut {
+    double area_below = 0.0;
+    double area_above = 0.0;
+    double moment_below = 0.0;  // ∫ (level − t) dA below the line (<= 0)
+    double moment_above = 0.0;  // ∫ (level − t) dA above the line (>= 0)
+    double chord = 0.0;         // length of the line inside the ring, from the edges strictly crossing it
+    double chord_slope = 0.0;   // d(chord)/dt from the same edges (exact while t stays between vertex levels)
+    double vertex_below;        // largest vertex level <= t (−inf if none)
+    double vertex_above;        // smallest vertex level > t (+inf if none)
+};
+
+LevelCut cut_at(const Ring& ring, BendingAxis axis, double t);
+
 enum class Side { Below, Above };
 
 struct HalfPlaneMoments {
@@ -29,8 +45,7 @@ struct HalfPlaneMoments {
     double first_moment = 0.0;  // ∫ (level − t) dA over the same part (negative below, positive above)
 };
 
-// The ring clipped to level < t (Below) or level > t (Above). By Green's theorem the cut along
-// the line adds nothing (d(level) = 0 on it), so the integrals are sums over clipped edges.
+// One side of cut_at().
 HalfPlaneMoments half_plane_moments(const Ring& ring, BendingAxis axis, double t, Side side);
 
 // d/dt of the area below level t — the chord length of the ring on the line — at both ends of

@@ -1,4 +1,4 @@
-#include "plascap/sections/neutral_axis.hpp"
+#include "plascap/sections/plastic_bending.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -18,35 +18,43 @@ void for_each_ring(const ValidSection& section, Visit visit) {
     }
 }
 
-// What one pass over the edges tells about the line level = t.
-struct Probe {
-    double force_below = 0.0;                             // F(t) = Σ fy·A_below(t)
+// The whole section cut at level t, yield-force weighted.
+struct SectionCut {
+    double force_below = 0.0;  // F(t) = Σ fy·A_below [N]
+    double force_above = 0.0;  // N − F(t)
+    double moment = 0.0;       // ∫ fy·|level − t| dA [N·m]
+    double rate = 0.0;         // dF/dt = Σ fy·chord (edges strictly crossing t)
+    double rate_slope = 0.0;   // d²F/dt²
     double a = -std::numeric_limits<double>::infinity();  // largest vertex level <= t
     double b = std::numeric_limits<double>::infinity();   // smallest vertex level > t
 };
 
-Probe probe(const ValidSection& section, BendingAxis axis, double t) {
-    Probe p;
+SectionCut cut_section(const ValidSection& section, BendingAxis axis, double t) {
+    SectionCut s;
     for_each_ring(section, [&](const Ring& ring, double fy) {
-        p.force_below += fy * half_plane_moments(ring, axis, t, Side::Below).area;
-        for (Point q : ring) {
-            const double level = level_of(q, axis);
-            if (level <= t) p.a = std::max(p.a, level);
-            else p.b = std::min(p.b, level);
-        }
+        const LevelCut c = cut_at(ring, axis, t);
+        s.force_below += fy * c.area_below;
+        s.force_above += fy * c.area_above;
+        s.moment += fy * (c.moment_above - c.moment_below);  // both sides positive: no cancellation
+        s.rate += fy * c.chord;
+        s.rate_slope += fy * c.chord_slope;
+        s.a = std::max(s.a, c.vertex_below);
+        s.b = std::min(s.b, c.vertex_above);
     });
-    return p;
+    return s;
 }
 
-// dF/dt = Σ fy·chord at t = a and t = b, for the piece [a, b] (no vertex level strictly inside).
-Chords force_rates(const ValidSection& section, BendingAxis axis, double a, double b) {
-    Chords rates;
+// F' and F'' on the piece [a, b] when t = a is itself a vertex level (the edges ending at t do not
+// cross it strictly, so the cut cannot see them): from the chord lengths at both ends.
+void rates_from_piece_ends(const ValidSection& section, BendingAxis axis, SectionCut& cut) {
+    double at_a = 0.0, at_b = 0.0;
     for_each_ring(section, [&](const Ring& ring, double fy) {
-        const Chords c = chord_lengths(ring, axis, a, b);
-        rates.at_a += fy * c.at_a;
-        rates.at_b += fy * c.at_b;
+        const Chords c = chord_lengths(ring, axis, cut.a, cut.b);
+        at_a += fy * c.at_a;
+        at_b += fy * c.at_b;
     });
-    return rates;
+    cut.rate = at_a;
+    cut.rate_slope = (at_b - at_a) / (cut.b - cut.a);
 }
 
 // Smallest u >= 0 with w·u + ½·k·u² = deficit (deficit >= 0, w >= 0 on a force piece), written
@@ -95,48 +103,57 @@ std::optional<double> middle_of_balanced_gap(std::vector<PartSummary> parts, dou
     return std::nullopt;
 }
 
+PlasticBending at_level(const ValidSection& section, BendingAxis axis, double t) {
+    return {t, cut_section(section, axis, t).moment};
+}
+
 }  // namespace
 
 double yield_force(const ValidSection& section, BendingAxis axis, double t, Side side) {
-    double force = 0.0;
-    for_each_ring(section, [&](const Ring& ring, double fy) { force += fy * half_plane_moments(ring, axis, t, side).area; });
-    return force;
+    const SectionCut cut = cut_section(section, axis, t);
+    return side == Side::Below ? cut.force_below : cut.force_above;
 }
 
-double plastic_neutral_axis(const ValidSection& section, BendingAxis axis) {
+PlasticBending plastic_bending(const ValidSection& section, BendingAxis axis) {
     const std::vector<PartSummary> parts = summarize_parts(section, axis);
     double lo = parts[0].lo, hi = parts[0].hi, total = 0.0, force_moment = 0.0;
     for (const PartSummary& part : parts) {
         lo = std::min(lo, part.lo), hi = std::max(hi, part.hi);
         total += part.force, force_moment += part.force_moment;
     }
-    const double target = 0.5 * total;
-    if (const std::optional<double> gap = middle_of_balanced_gap(parts, total)) return *gap;
+    if (const std::optional<double> gap = middle_of_balanced_gap(parts, total)) return at_level(section, axis, *gap);
 
     double t = force_moment / total;  // force-weighted centroid: exact for doubly symmetric sections
     for (;;) {
         if (!(t > lo && t < hi)) {
             t = 0.5 * (lo + hi);
             // The bracket has closed on a vertex level: the root is there, up to round-off.
-            if (!(t > lo && t < hi)) return t;
+            if (!(t > lo && t < hi)) return at_level(section, axis, t);
         }
-        const Probe p = probe(section, axis, t);
-        const Chords w = force_rates(section, axis, p.a, p.b);
-        const double k = (w.at_b - w.at_a) / (p.b - p.a);  // F'' on the piece
-        const double w_t = w.at_a + k * (t - p.a);         // F'(t)
-        if (p.force_below <= target) {
-            // Root at t + u with F(t) + w_t·u + ½k·u² = target; inside the piece unless u > b − t.
-            const double u = step_to_target(target - p.force_below, w_t, k);
-            if (u <= p.b - t) return t + u;
-            lo = p.b;
-            t = std::isfinite(u) ? t + u : 0.5 * (lo + hi);
+        SectionCut cut = cut_section(section, axis, t);
+        if (cut.a == t) rates_from_piece_ends(section, axis, cut);
+        const double w = cut.rate, k = cut.rate_slope;
+        // Half the force imbalance: F(s) − N/2 = 0 at the root, F(t) − N/2 = −deficit.
+        const double deficit = 0.5 * (cut.force_above - cut.force_below);
+        double step;  // signed distance from t to the root of this piece's quadratic
+        if (deficit >= 0.0) {
+            step = step_to_target(deficit, w, k);  // F(t) + w·u + ½k·u² = N/2
+            if (!(step <= cut.b - t)) {
+                lo = cut.b;
+                t = std::isfinite(step) ? t + step : 0.5 * (lo + hi);
+                continue;
+            }
         } else {
-            // Root at t − v with F(t) − w_t·v + ½k·v² = target.
-            const double v = step_to_target(p.force_below - target, w_t, -k);
-            if (v <= t - p.a) return t - v;
-            hi = p.a;
-            t = std::isfinite(v) ? t - v : 0.5 * (lo + hi);
+            step = -step_to_target(-deficit, w, -k);  // F(t) − w·v + ½k·v² = N/2
+            if (!(-step <= t - cut.a)) {
+                hi = cut.a;
+                t = std::isfinite(step) ? t + step : 0.5 * (lo + hi);
+                continue;
+            }
         }
+        // M(t + Δ) = M(t) + ∫_0^Δ (F_below − F_above)(t + δ) dδ, with F_below − F_above = −2·deficit + 2wδ + kδ².
+        const double moment = cut.moment - 2.0 * deficit * step + w * step * step + k * step * step * step / 3.0;
+        return {t + step, moment};
     }
 }
 
