@@ -128,11 +128,11 @@ TEST(SectionCalc, BadInputFiles) {
         const char* file;
         const char* message;
     } cases[] = {
-        {"malformed.json", "malformed JSON: [json.exception.parse_error.101] parse error at line 1, column 63"},
-        {"empty.json", "malformed JSON: [json.exception.parse_error.101] parse error at line 1, column 1"},
-        {"random-bytes.json", "malformed JSON: "},
+        {"malformed.json", "malformed JSON: parse error at line 1, column 63"},
+        {"empty.json", "malformed JSON: parse error at line 1, column 1"},
+        {"random-bytes.json", "malformed JSON: parse error at line 1, column 1: syntax error while parsing value - invalid literal; last read: '\\x89'"},
         {"not-an-object.json", "section: expected a JSON object with \"parts\", got array"},
-        {"overflowing-number.json", "1e400"},
+        {"overflowing-number.json", "unreadable JSON: number overflow parsing '1e400'"},
         {"wrong-type.json", "parts[0].outer[1][1]: expected a number, got string"},
         {"unknown-key.json", "parts[0]: unknown key \"hole\""},
         {"missing-material.json", "parts[0]: no material"},

@@ -1,5 +1,6 @@
 #include "plascap/sections/section_json.hpp"
 
+#include <cstdio>
 #include <fstream>
 #include <initializer_list>
 #include <nlohmann/json.hpp>
@@ -87,14 +88,34 @@ Part read_part(const json& value, const std::string& where, const std::optional<
     return part;
 }
 
+// nlohmann's message without its "[json.exception.<kind>.<id>] " prefix, and with bytes that are
+// not printable ASCII shown as \xNN (it quotes the offending input, which may be binary).
+std::string describe(const json::exception& e) {
+    std::string message = e.what();
+    if (!message.empty() && message[0] == '[') {
+        const std::size_t end = message.find("] ");
+        if (end != std::string::npos) message.erase(0, end + 2);
+    }
+    std::string printable;
+    for (unsigned char c : message) {
+        if (c >= 0x20 && c < 0x7f) {
+            printable += static_cast<char>(c);
+        } else {
+            char hex[8];
+            std::snprintf(hex, sizeof hex, "\\x%02X", c);
+            printable += hex;
+        }
+    }
+    return printable;
+}
+
 json parse_json(std::string_view text) {
     try {
         return json::parse(text.begin(), text.end());
     } catch (const json::parse_error& e) {
-        // nlohmann's message names the line and column.
-        throw InputError(std::string("malformed JSON: ") + e.what());
+        throw InputError("malformed JSON: " + describe(e));  // names the line and column
     } catch (const json::exception& e) {
-        throw InputError(std::string("unreadable JSON: ") + e.what());
+        throw InputError("unreadable JSON: " + describe(e));  // e.g. a number too large for a double
     }
 }
 

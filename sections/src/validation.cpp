@@ -11,7 +11,7 @@
 namespace plascap {
 namespace {
 
-// Supported sizes (documented in docs/sections.md): coordinates within ±1e6 m, rings at least
+// Supported sizes (documented in docs/section-format.md): coordinates within ±1e6 m, rings at least
 // 1e-9 m across, and area at least 1e-12 of the square of the ring's extent (anything thinner is
 // collinear up to the round-off of its own coordinates).
 constexpr double kMaxCoordinate = 1e6;
