@@ -15,13 +15,7 @@ struct PartTotals {
 PartTotals sum_parts(const ValidSection& section) {
     PartTotals totals;
     for (const Part& part : section.parts()) {
-        RingMoments m = ring_moments(part.outer);
-        for (const Ring& hole : part.holes) {
-            const RingMoments h = ring_moments(hole);  // clockwise: negative
-            m.area += h.area;
-            m.Sx += h.Sx;
-            m.Sz += h.Sz;
-        }
+        const RingMoments m = part_moments(part);
         totals.force += part.material.fy * m.area;                                          // eq. 2.10
         totals.shear_force += shear_yield_stress(part.material.fy, section.shear()) * m.area;  // eq. 2.11
         totals.moments.area += m.area;

@@ -77,11 +77,7 @@ std::vector<PartSummary> summarize_parts(const ValidSection& section, BendingAxi
     for (const Part& part : section.parts()) {
         PartSummary s{level_of(part.outer[0], axis), level_of(part.outer[0], axis), 0.0, 0.0};
         for (Point q : part.outer) s.lo = std::min(s.lo, level_of(q, axis)), s.hi = std::max(s.hi, level_of(q, axis));
-        RingMoments m = ring_moments(part.outer);
-        for (const Ring& hole : part.holes) {
-            const RingMoments h = ring_moments(hole);
-            m.area += h.area, m.Sx += h.Sx, m.Sz += h.Sz;
-        }
+        const RingMoments m = part_moments(part);
         s.force = part.material.fy * m.area;
         s.force_moment = part.material.fy * (axis == BendingAxis::X ? m.Sz : m.Sx);
         parts.push_back(s);

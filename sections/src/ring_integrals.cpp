@@ -96,6 +96,15 @@ LevelCut cut_at(const Ring& ring, BendingAxis axis, double t) {
     return cut;
 }
 
+RingMoments part_moments(const Part& part) {
+    RingMoments m = ring_moments(part.outer);
+    for (const Ring& hole : part.holes) {
+        const RingMoments h = ring_moments(hole);
+        m.area += h.area, m.Sx += h.Sx, m.Sz += h.Sz;
+    }
+    return m;
+}
+
 HalfPlaneMoments half_plane_moments(const Ring& ring, BendingAxis axis, double t, Side side) {
     const LevelCut cut = cut_at(ring, axis, t);
     return side == Side::Below ? HalfPlaneMoments{cut.area_below, cut.moment_below}

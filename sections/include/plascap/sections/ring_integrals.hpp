@@ -22,6 +22,10 @@ struct RingMoments {
 // arbitrary moments of polygons", 1996).
 RingMoments ring_moments(const Ring& ring);
 
+// The same over a validated part: its outer ring (counter-clockwise) plus its holes (clockwise, so
+// they subtract).
+RingMoments part_moments(const Part& part);
+
 // The ring seen from the line level = t: what lies below and above it, and how the line cuts it.
 // By Green's theorem the cut along the line adds nothing to either side (d(level) = 0 on it), so
 // every integral is a sum over the ring's edges clipped to one side, each exact.
