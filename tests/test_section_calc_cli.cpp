@@ -95,6 +95,14 @@ TEST(SectionCalc, EveryExampleRuns) {
     }
 }
 
+// Every option is documented in --help.
+TEST(SectionCalc, HelpListsEveryOption) {
+    const CliRun run = section_calc("--help");
+    EXPECT_EQ(run.exit_code, 0);
+    for (const char* option : {"FILE", "--rect", "--fy", "--shear", "--reference", "--only", "--method", "--json", "--version"})
+        EXPECT_NE(run.out.find(option), std::string::npos) << option;
+}
+
 // Bad command lines: exit 2, one line on stderr, nothing on stdout.
 TEST(SectionCalc, BadCommandLines) {
     const struct {
