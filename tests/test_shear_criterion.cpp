@@ -41,4 +41,17 @@ TEST(Material, RejectsNonPositiveOrNonFiniteYieldStress) {
         }
     }
     EXPECT_NO_THROW(validate_material(Material{"", 1.0}, "x"));
+    EXPECT_NO_THROW(validate_material(Material{"", 1e12}, "x"));
+}
+
+TEST(Material, RejectsYieldStressOutsideTheSupportedRange) {
+    for (double fy : {5e-324, 0.5, 2e12}) {
+        try {
+            validate_material(Material{"", fy}, "part 0, material");
+            FAIL() << "accepted fy = " << fy;
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find("Pa is outside the supported range 1 Pa to 1e12 Pa"), std::string::npos)
+                << e.what();
+        }
+    }
 }
