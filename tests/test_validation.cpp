@@ -120,10 +120,20 @@ TEST(Validation, HolesOverlapping) {
 
 TEST(Validation, PartsOverlapping) {
     EXPECT_REFUSED(section_of({part(box(0, 0, 1, 1), 1e8), part(box(2, 0, 3, 1), 1e8), part(box(0.5, 0.5, 1.5, 1.5), 1e8)}),
-                   "part 2: overlaps part 0 (their interiors intersect; sharing an edge is allowed)");
+                   "part 2: overlaps part 0 by 0.25 m² (parts may share edges, not area)");
     // A part inside another's hole does not overlap it; parts sharing an edge or a corner are fine.
     EXPECT_EQ(refusal(section_of({part(box(0, 0, 3, 3), 1e8, {box(1, 1, 2, 2)}), part(box(1.2, 1.2, 1.8, 1.8), 1e8)})), "");
     EXPECT_EQ(refusal(section_of({part(box(0, 0, 1, 1), 1e8), part(box(1, 0, 2, 1), 1e8), part(box(2, 1, 3, 2), 1e8)})), "");
+}
+
+// A shared edge written twice with round-off (70·0.01 + 0.01 lies one ulp above 71·0.01) overlaps by
+// ~1e-19 m²: that is the same edge, not an overlap. An overlap of 1e-6 of the part is refused.
+TEST(Validation, RoundOffOverlapOfASharedEdgeIsAccepted) {
+    const double top_of_lower = 70 * 0.01 + 0.01, bottom_of_upper = 71 * 0.01;
+    ASSERT_GT(top_of_lower, bottom_of_upper);  // the premise: the parts really overlap, by round-off
+    EXPECT_EQ(refusal(section_of({part(box(0, 0.7, 0.01, top_of_lower), 1e8), part(box(0, bottom_of_upper, 0.01, 0.72), 1e8)})), "");
+    const std::string real = refusal(section_of({part(box(0, 0, 1, 1), 1e8), part(box(0, 1 - 1e-6, 1, 2), 1e8)}));
+    EXPECT_EQ(real.rfind("part 1: overlaps part 0 by 1.0000000", 0), 0u) << real;
 }
 
 TEST(Validation, YieldStressMustBePositiveAndFinite) {

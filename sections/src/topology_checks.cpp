@@ -122,8 +122,18 @@ bool strictly_inside(const Ring& ring, Point p) {
            CGAL::ON_BOUNDED_SIDE;
 }
 
-bool interiors_overlap(const Part& a, const Part& b) {
-    return CGAL::do_intersect(to_polygon_with_holes(a), to_polygon_with_holes(b));
+double overlap_area(const Part& a, const Part& b) {
+    const CGAL::Polygon_with_holes_2<Epeck> pa = to_polygon_with_holes(a);
+    const CGAL::Polygon_with_holes_2<Epeck> pb = to_polygon_with_holes(b);
+    if (!CGAL::do_intersect(pa, pb)) return 0.0;
+    std::vector<CGAL::Polygon_with_holes_2<Epeck>> pieces;
+    CGAL::intersection(pa, pb, std::back_inserter(pieces));
+    Epeck::FT area = 0;
+    for (const auto& piece : pieces) {
+        area += piece.outer_boundary().area();
+        for (auto hole = piece.holes_begin(); hole != piece.holes_end(); ++hole) area += hole->area();  // clockwise: negative
+    }
+    return CGAL::to_double(area);
 }
 
 }  // namespace plascap::detail

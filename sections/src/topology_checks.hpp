@@ -36,8 +36,8 @@ std::optional<std::pair<std::size_t, std::size_t>> find_touching_edges(const Rin
 // True when p is strictly inside the simple ring.
 bool strictly_inside(const Ring& ring, Point p);
 
-// True when the interiors of two validated parts intersect (regularized: a shared edge or vertex
-// is not an overlap). CGAL 2D Boolean set operations on exact constructions.
-bool interiors_overlap(const Part& a, const Part& b);
+// Area of the intersection of two validated parts (regularized: a shared edge or vertex has none),
+// by CGAL's 2D Boolean set operations on exact constructions; 0 when their interiors are apart.
+double overlap_area(const Part& a, const Part& b);
 
 }  // namespace plascap::detail
