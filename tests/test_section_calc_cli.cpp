@@ -95,6 +95,16 @@ TEST(SectionCalc, EveryExampleRuns) {
     }
 }
 
+// "-" reads the section from standard input; its errors name "standard input".
+TEST(SectionCalc, ReadsStandardInput) {
+    const CliRun good = section_calc("- --json --only N < \"" + example("rectangle.json") + "\"");
+    ASSERT_EQ(good.exit_code, 0) << good.err;
+    EXPECT_LT(relative_error(nlohmann::json::parse(good.out)["N"].get<double>(), 0.1 * 0.05 * 355e6), 1e-12);
+    const CliRun bad = section_calc("- < \"" + kSource + "/tests/bad-input/collinear.json\"");
+    EXPECT_EQ(bad.exit_code, 2);
+    EXPECT_EQ(bad.err, "section-calc: error: standard input: part 0, outer ring: has zero area: its vertices are collinear\n");
+}
+
 // Every option is documented in --help.
 TEST(SectionCalc, HelpListsEveryOption) {
     const CliRun run = section_calc("--help");

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <iostream>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -28,7 +29,7 @@ struct Options {
 };
 
 void add_options(CLI::App& app, Options& o) {
-    app.add_option("FILE", o.file, "Section file (JSON, format in docs/section-format.md)");
+    app.add_option("FILE", o.file, "Section file (JSON, format in docs/section-format.md); - reads standard input");
     app.add_option("--rect", o.rect, "Shortcut: a centred rectangle, B along x and H along z [m]")->expected(2);
     app.add_option("--fy", o.fy, "Yield stress [Pa] of the --rect section");
     app.add_option("--shear", o.shear, "Shear criterion: tresca (τy = fy/2) or von-mises (τy = fy/√3); overrides the file");
@@ -62,8 +63,15 @@ plascap::Section load_section(const Options& o, std::string& source) {
         return plascap::rectangle_section(o.rect[0], o.rect[1], *o.fy);
     }
     if (o.fy) throw plascap::InputError("--fy goes with --rect; a section file gives its own materials");
-    source = o.file;
-    return plascap::read_section_file(o.file);
+    source = o.file == "-" ? "standard input" : o.file;
+    if (o.file != "-") return plascap::read_section_file(o.file);
+    std::ostringstream text;
+    text << std::cin.rdbuf();
+    try {
+        return plascap::parse_section_json(text.str());
+    } catch (const plascap::InputError& e) {
+        throw plascap::InputError(source + ": " + e.what());
+    }
 }
 
 // validate_section, with the file named in front of its message.
@@ -86,7 +94,7 @@ int run(const Options& o) {
     if (o.shear) section.shear = plascap::parse_shear_criterion(*o.shear);
     if (!o.reference.empty()) section.reference = plascap::Point{o.reference[0], o.reference[1]};
 
-    const plascap::ValidSection valid = validated(section, o.file);
+    const plascap::ValidSection valid = validated(section, o.file.empty() ? "" : source);
     const plascap::Capacities capacities = plascap::compute_capacities(valid, wanted);
     const plascap::tools::ReportContext context{source, o.method, &valid};
     std::cout << (o.json ? plascap::tools::capacity_json(capacities, context)
