@@ -99,6 +99,22 @@ std::optional<double> middle_of_balanced_gap(std::vector<PartSummary> parts, dou
     return std::nullopt;
 }
 
+// Where the root can still be, and how fast that interval shrinks.
+struct Bracket {
+    double lo, hi;
+    double width;     // hi − lo before the last missed step
+    int missed_steps;
+
+    // The next t after a step that missed its piece: the quadratic's root, except that (as in
+    // Numerical Recipes' rtsafe) from the third miss on, a step that did not halve the bracket is
+    // followed by bisection, so the search needs O(log) steps even where quadratics extrapolate badly.
+    double next_guess(double candidate) {
+        const bool slow = ++missed_steps > 2 && hi - lo > 0.5 * width;
+        width = hi - lo;
+        return slow || !std::isfinite(candidate) ? 0.5 * (lo + hi) : candidate;
+    }
+};
+
 PlasticBending at_level(const ValidSection& section, BendingAxis axis, double t) {
     return {t, cut_section(section, axis, t).moment};
 }
@@ -120,11 +136,12 @@ PlasticBending plastic_bending(const ValidSection& section, BendingAxis axis) {
     if (const std::optional<double> gap = middle_of_balanced_gap(parts, total)) return at_level(section, axis, *gap);
 
     double t = force_moment / total;  // force-weighted centroid: exact for doubly symmetric sections
+    Bracket bracket{lo, hi, hi - lo, 0};
     for (;;) {
-        if (!(t > lo && t < hi)) {
-            t = 0.5 * (lo + hi);
+        if (!(t > bracket.lo && t < bracket.hi)) {
+            t = 0.5 * (bracket.lo + bracket.hi);
             // The bracket has closed on a vertex level: the root is there, up to round-off.
-            if (!(t > lo && t < hi)) return at_level(section, axis, t);
+            if (!(t > bracket.lo && t < bracket.hi)) return at_level(section, axis, t);
         }
         SectionCut cut = cut_section(section, axis, t);
         if (cut.a == t) rates_from_piece_ends(section, axis, cut);
@@ -135,15 +152,15 @@ PlasticBending plastic_bending(const ValidSection& section, BendingAxis axis) {
         if (deficit >= 0.0) {
             step = step_to_target(deficit, w, k);  // F(t) + w·u + ½k·u² = N/2
             if (!(step <= cut.b - t)) {
-                lo = cut.b;
-                t = std::isfinite(step) ? t + step : 0.5 * (lo + hi);
+                bracket.lo = cut.b;
+                t = bracket.next_guess(t + step);
                 continue;
             }
         } else {
             step = -step_to_target(-deficit, w, -k);  // F(t) − w·v + ½k·v² = N/2
             if (!(-step <= t - cut.a)) {
-                hi = cut.a;
-                t = std::isfinite(step) ? t + step : 0.5 * (lo + hi);
+                bracket.hi = cut.a;
+                t = bracket.next_guess(t + step);
                 continue;
             }
         }
