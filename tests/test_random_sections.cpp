@@ -11,25 +11,9 @@
 #include "test_support.hpp"
 
 using namespace plascap;
+using plascap::test::random_star;
 
 namespace {
-
-Ring random_star(std::mt19937& rng, Point centre, double radius, bool snap) {
-    std::uniform_int_distribution<int> count(3, 60);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
-    const int n = count(rng);
-    const double pi = std::acos(-1.0);
-    Ring ring;
-    for (int i = 0; i < n; ++i) {
-        // Angles strictly increasing inside their own sector keep the star simple.
-        const double angle = 2.0 * pi * (i + 0.1 + 0.8 * unit(rng)) / n;
-        const double r = radius * (0.3 + 0.7 * unit(rng));
-        Point p{centre.x + r * std::cos(angle), centre.z + r * std::sin(angle)};
-        if (snap) p = {std::round(p.x * 8.0) / 8.0, std::round(p.z * 8.0) / 8.0};
-        if (ring.empty() || p.x != ring.back().x || p.z != ring.back().z) ring.push_back(p);
-    }
-    return ring;
-}
 
 // ∫ fy·|level − t| dA from the clipped first moments.
 double absolute_moment(const ValidSection& s, BendingAxis axis, double t) {

@@ -1,0 +1,221 @@
+#include "plascap/sections/cubature.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "mesh_neutral_axis.hpp"
+#include "plascap/input_error.hpp"
+#include "plascap/sections/section_mesh.hpp"
+#include "triangle_cubature.hpp"
+
+namespace plascap {
+namespace {
+
+using detail::Estimate;
+using detail::Integrand;
+using detail::Triangle;
+using detail::TriangleRule;
+
+class Unit final : public Integrand {  // ∫ dA: N and Q (eqs. 2.10, 2.11)
+public:
+    double operator()(Point) const override { return 1.0; }
+    detail::PolynomialDegree degree_on(const Triangle&) const override { return {0, 0}; }
+};
+
+class DistanceFromAxis final : public Integrand {  // |z − z_pna| or |x − x_pna| (eqs. 2.12, 2.13)
+public:
+    DistanceFromAxis(BendingAxis axis, double level) : axis_(axis), level_(level) {}
+    double operator()(Point p) const override { return std::abs(level_of(p, axis_) - level_); }
+    // Linear where the triangle lies on one side of the axis: the map p(u, w) is bilinear.
+    // A corner within round-off of the axis (its mesh edge is a constructed intersection) counts
+    // as on it; the kink it misses spans a sliver of that width.
+    detail::PolynomialDegree degree_on(const Triangle& t) const override {
+        const double a = level_of(t.a, axis_) - level_, b = level_of(t.b, axis_) - level_, c = level_of(t.c, axis_) - level_;
+        const double slack = 1e-12 * std::max({std::abs(a), std::abs(b), std::abs(c)});
+        if ((a >= -slack && b >= -slack && c >= -slack) || (a <= slack && b <= slack && c <= slack)) return {1, 1};
+        return {};
+    }
+
+private:
+    BendingAxis axis_;
+    double level_;
+};
+
+class DistanceFromPoint final : public Integrand {  // |p − c| (eq. 2.14)
+public:
+    explicit DistanceFromPoint(Point c) : c_(c) {}
+    double operator()(Point p) const override { return std::hypot(p.x - c_.x, p.z - c_.z); }
+    // From the collapsed corner, |p(u, w) − a| = u·|(b − a) + w·(c − b)|: linear in u.
+    detail::PolynomialDegree degree_on(const Triangle& t) const override {
+        if (t.a.x == c_.x && t.a.z == c_.z) return {1, std::nullopt};
+        return {};
+    }
+
+private:
+    Point c_;
+};
+
+struct Sum {
+    double value = 0.0;
+    double error = 0.0;
+    void add(double factor, const Estimate& e) {
+        value += factor * e.value;
+        error += factor * e.error;
+    }
+};
+
+struct AreaAndCentroid {
+    double area = 0.0;
+    Point centroid;  // local coordinates
+};
+
+// Σ A_i and Σ A_i·(a + b + c)/3 over the triangles: exact for polygons.
+AreaAndCentroid area_and_centroid(const SectionMesh& mesh) {
+    double area = 0.0, sx = 0.0, sz = 0.0;
+    for (const auto& corner : mesh.triangles) {
+        const Point a = mesh.vertices[corner[0]], b = mesh.vertices[corner[1]], c = mesh.vertices[corner[2]];
+        const double triangle_area = 0.5 * ((b.x - a.x) * (c.z - a.z) - (c.x - a.x) * (b.z - a.z));
+        area += triangle_area;
+        sx += triangle_area * (a.x + b.x + c.x) / 3.0;
+        sz += triangle_area * (a.z + b.z + c.z) / 3.0;
+    }
+    return {area, {sx / area, sz / area}};
+}
+
+// The triangle with the joint point, when it is a corner, as the collapsed corner a.
+Triangle oriented_triangle(const SectionMesh& mesh, std::size_t i, Point joint) {
+    const auto& corner = mesh.triangles[i];
+    Point p[3] = {mesh.vertices[corner[0]], mesh.vertices[corner[1]], mesh.vertices[corner[2]]};
+    for (int k = 0; k < 3; ++k)
+        if (p[k].x == joint.x && p[k].z == joint.z) return {p[k], p[(k + 1) % 3], p[(k + 2) % 3]};
+    return {p[0], p[1], p[2]};
+}
+
+double extent(const SectionMesh& mesh) {
+    double x_min = 0.0, x_max = 0.0, z_min = 0.0, z_max = 0.0;
+    for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+        const Point p = mesh.vertices[i];
+        x_min = i == 0 ? p.x : std::min(x_min, p.x);
+        x_max = i == 0 ? p.x : std::max(x_max, p.x);
+        z_min = i == 0 ? p.z : std::min(z_min, p.z);
+        z_max = i == 0 ? p.z : std::max(z_max, p.z);
+    }
+    return std::max(x_max - x_min, z_max - z_min);
+}
+
+// A cut that passes within round-off of the joint point (the centroid of a symmetric section) is
+// moved onto it, so the mesh has one vertex there instead of a cluster of slivers. Mx and Mz are
+// stationary in the axis position (dMx/dz_pna = 0 at the equal-force axis), so the kink the cut
+// now misses by δ costs O(δ²).
+void snap_cuts_to_joint(MeshOptions& mesh, Point joint, double extent) {
+    const double near = 1e-12 * extent;
+    if (mesh.z_cut && std::abs(*mesh.z_cut - joint.z) <= near) mesh.z_cut = joint.z;
+    if (mesh.x_cut && std::abs(*mesh.x_cut - joint.x) <= near) mesh.x_cut = joint.x;
+}
+
+TriangleRule make_rule(const CubatureOptions& options) {
+    return options.rule == CubatureRule::Adaptive ? TriangleRule::adaptive(options.tolerance)
+                                                  : TriangleRule::fixed(options.order);
+}
+
+std::string number(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", value);
+    return text;
+}
+
+}  // namespace
+
+void validate_cubature_options(const CubatureOptions& options) {
+    // GSL's qag cannot reach a relative tolerance below 50·ε ≈ 1.1e-14.
+    if (!(options.tolerance >= 1e-13 && options.tolerance <= 0.1))
+        throw InputError("cubature: the tolerance must be between 1e-13 and 0.1 (got " + number(options.tolerance) + ")");
+    if (options.order < 1 || options.order > 100)
+        throw InputError("cubature: the order must be a whole number from 1 to 100 (got " + std::to_string(options.order) + ")");
+    if (!std::isfinite(options.max_area) || options.max_area < 0.0)
+        throw InputError("cubature: the largest triangle area must be a finite number ≥ 0 m² (got " +
+                         number(options.max_area) + ")");
+}
+
+CubatureResult cubature_capacities(const ValidSection& section, CapacitySet wanted, const CubatureOptions& options) {
+    validate_cubature_options(options);
+    const auto start = std::chrono::steady_clock::now();
+    CubatureResult result;
+    Capacities& capacities = result.capacities;
+    capacities.shear = section.shear();
+
+    std::vector<double> fy_of_part;
+    for (const Part& part : section.parts()) fy_of_part.push_back(part.material.fy);
+
+    // A first triangulation gives the area, the centroid and the neutral axes; the second
+    // conforms to the kinks they define.
+    const SectionMesh plain = mesh_section(section);
+    const AreaAndCentroid geometry = area_and_centroid(plain);
+    capacities.area = geometry.area;
+    capacities.centroid = section.to_section(geometry.centroid);
+
+    MeshOptions mesh_options;
+    mesh_options.max_area = options.max_area;
+    double z_pna = 0.0, x_pna = 0.0;
+    if (wanted.contains(Capacity::Mx)) {
+        z_pna = detail::mesh_neutral_axis(plain, fy_of_part, BendingAxis::X);
+        capacities.z_pna = z_pna + section.local_origin().z;
+        if (options.conforming) mesh_options.z_cut = z_pna;
+    }
+    if (wanted.contains(Capacity::Mz)) {
+        x_pna = detail::mesh_neutral_axis(plain, fy_of_part, BendingAxis::Z);
+        capacities.x_pna = x_pna + section.local_origin().x;
+        if (options.conforming) mesh_options.x_cut = x_pna;
+    }
+    const Point joint = section.reference() ? section.to_local(*section.reference()) : geometry.centroid;
+    if (wanted.contains(Capacity::My)) {
+        capacities.reference = section.to_section(joint);
+        if (options.conforming) {
+            mesh_options.vertex = joint;
+            snap_cuts_to_joint(mesh_options, joint, extent(plain));
+        }
+    }
+    const bool remesh = mesh_options.z_cut || mesh_options.x_cut || mesh_options.vertex || mesh_options.max_area > 0.0;
+    const SectionMesh mesh = remesh ? mesh_section(section, mesh_options) : plain;
+
+    const TriangleRule rule = make_rule(options);
+    const Unit unit;
+    const DistanceFromAxis from_z_axis(BendingAxis::X, z_pna), from_x_axis(BendingAxis::Z, x_pna);
+    const DistanceFromPoint from_joint(joint);
+    const bool want_area = wanted.contains(Capacity::N) || wanted.contains(Capacity::Qx) || wanted.contains(Capacity::Qz);
+    Sum force, shear, mx, mz, my;
+    for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+        const Triangle triangle = oriented_triangle(mesh, i, joint);
+        const double fy = fy_of_part[mesh.part_of[i]];
+        const double tau = shear_yield_stress(fy, section.shear());
+        if (want_area) {
+            const Estimate area = rule.integrate(triangle, unit);
+            force.add(fy, area);   // eq. 2.10
+            shear.add(tau, area);  // eq. 2.11
+        }
+        if (wanted.contains(Capacity::Mx)) mx.add(fy, rule.integrate(triangle, from_z_axis));   // eq. 2.12
+        if (wanted.contains(Capacity::Mz)) mz.add(fy, rule.integrate(triangle, from_x_axis));   // eq. 2.13
+        if (wanted.contains(Capacity::My)) my.add(tau, rule.integrate(triangle, from_joint));   // eq. 2.14
+    }
+
+    const auto store = [&](Capacity c, std::optional<double>& slot, const Sum& sum) {
+        if (!wanted.contains(c)) return;
+        slot = sum.value;
+        result.error[static_cast<std::size_t>(c)] = sum.error;
+    };
+    store(Capacity::N, capacities.N, force);
+    store(Capacity::Qx, capacities.Qx, shear);
+    store(Capacity::Qz, capacities.Qz, shear);
+    store(Capacity::Mx, capacities.Mx, mx);
+    store(Capacity::Mz, capacities.Mz, mz);
+    store(Capacity::My, capacities.My, my);
+    result.triangles = mesh.triangles.size();
+    result.evaluations = rule.evaluations();
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+}  // namespace plascap

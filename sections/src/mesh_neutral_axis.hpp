@@ -1,0 +1,17 @@
+#pragma once
+// The plastic neutral axis found on a triangle mesh — independent of the exact route's
+// piecewise-quadratic solve in plastic_bending.cpp, so the two routes check each other.
+#include <vector>
+
+#include "plascap/sections/ring_integrals.hpp"
+#include "plascap/sections/section_mesh.hpp"
+
+namespace plascap::detail {
+
+// The level t (z for BendingAxis::X, x for Z) where the yield force on either side is equal:
+// Σ fy·A(level > t) = Σ fy·A(level < t) (paper eqs. 2.12–2.13). Each triangle's area beyond t
+// is exact (similar triangles); t is the root by Brent's method (gsl_root_fsolver_brent) to
+// round-off. Where the root is not unique (a gap without material), the middle of the gap.
+double mesh_neutral_axis(const SectionMesh& mesh, const std::vector<double>& fy_of_part, BendingAxis axis);
+
+}  // namespace plascap::detail
