@@ -105,11 +105,62 @@ TEST(SectionCalc, ReadsStandardInput) {
     EXPECT_EQ(bad.err, "section-calc: error: standard input: part 0, outer ring: has zero area: its vertices are collinear\n");
 }
 
+// The cubature route end to end: the paper's 38.2 to the requested tolerance, with the estimates,
+// mesh size and time the JSON promises; the fixed rule is named as such.
+TEST(SectionCalc, CubatureMethodJson) {
+    const CliRun run = section_calc("--method cubature --tol 1e-9 --json \"" + example("paper-square.json") + "\"");
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const nlohmann::json j = nlohmann::json::parse(run.out);
+    EXPECT_EQ(j["method"], "cubature");
+    EXPECT_NEAR(j["My"].get<double>(), 38.2597858232, 38.26 * 1e-9);
+    for (const char* key : {"N", "Qx", "Qz", "Mx", "Mz", "My"}) {
+        ASSERT_TRUE(j["errors"].contains(key)) << key;
+        EXPECT_GE(j["errors"][key].get<double>(), 0.0) << key;
+    }
+    EXPECT_LE(j["errors"]["My"].get<double>(), 2 * 38.26 * 1e-9);
+    EXPECT_GT(j["triangles"].get<int>(), 0);
+    EXPECT_GT(j["seconds"].get<double>(), 0.0);
+    EXPECT_EQ(j["cubature"]["rule"], "adaptive");
+    EXPECT_EQ(j["cubature"]["tolerance"].get<double>(), 1e-9);
+
+    const CliRun fixed = section_calc("--method cubature --order 6 --max-area 1e-6 --json \"" + example("t-section.json") + "\"");
+    ASSERT_EQ(fixed.exit_code, 0) << fixed.err;
+    const nlohmann::json f = nlohmann::json::parse(fixed.out);
+    EXPECT_EQ(f["cubature"]["rule"], "fixed");
+    EXPECT_EQ(f["cubature"]["order"].get<int>(), 6);
+    EXPECT_GE(f["triangles"].get<double>(), 0.003 / 1e-6);  // area 3000 mm², triangles ≤ 1 mm²
+    EXPECT_LT(relative_error(f["Mx"].get<double>(), 42300.0), 1e-12);
+}
+
+TEST(SectionCalc, CubatureTableShowsEstimates) {
+    const CliRun run = section_calc("--method cubature \"" + example("t-section.json") + "\"");
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_NE(run.out.find("± estimated error"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("cubature, adaptive to 1e-10 relative"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find(" triangles, "), std::string::npos) << run.out;
+}
+
+// --svg draws the section: the file is SVG with the outline, both axes, centroid, joint and scale.
+TEST(SectionCalc, SvgDrawing) {
+    const std::string path = ::testing::TempDir() + "section_calc_" + std::to_string(getpid()) + ".svg";
+    const CliRun run = section_calc("--svg \"" + path + "\" \"" + example("hollow-rectangle.json") + "\"");
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    std::ifstream file(path);
+    std::stringstream svg;
+    svg << file.rdbuf();
+    const std::string text = svg.str();
+    EXPECT_EQ(text.rfind("<svg xmlns=\"http://www.w3.org/2000/svg\"", 0), 0u) << text.substr(0, 80);
+    for (const char* needle : {"fill-rule=\"evenodd\"", "Mx axis z = 0 m", "Mz axis x = 0 m", "centroid", "joint point (My)", "<polygon", " mm</text>", "</svg>"})
+        EXPECT_NE(text.find(needle), std::string::npos) << needle;
+    std::remove(path.c_str());
+}
+
 // Every option is documented in --help.
 TEST(SectionCalc, HelpListsEveryOption) {
     const CliRun run = section_calc("--help");
     EXPECT_EQ(run.exit_code, 0);
-    for (const char* option : {"FILE", "--rect", "--fy", "--shear", "--reference", "--only", "--method", "--json", "--version"})
+    for (const char* option : {"FILE", "--rect", "--fy", "--shear", "--reference", "--only", "--method", "--tol", "--order",
+                               "--max-area", "--svg", "--json", "--version"})
         EXPECT_NE(run.out.find(option), std::string::npos) << option;
 }
 
@@ -125,7 +176,13 @@ TEST(SectionCalc, BadCommandLines) {
         {"--rect 0.1 0.1 --fy -1e8", "section-calc: error: part 0, material: yield stress fy must be a positive finite number in Pa (got -100000000)\n"},
         {"--rect 0.1 0.1 --fy 1e8 --only N,Mq", "section-calc: error: unknown capacity 'Mq' (choose from N, Qx, Qz, Mx, Mz, My)\n"},
         {"--rect 0.1 0.1 --fy 1e8 --shear rankine", "section-calc: error: unknown shear criterion 'rankine' (choose \"tresca\" or \"von-mises\")\n"},
-        {"--rect 0.1 0.1 --fy 1e8 --method magic", "section-calc: error: --method magic: unknown method (available: exact)\n"},
+        {"--rect 0.1 0.1 --fy 1e8 --method magic", "section-calc: error: --method magic: unknown method (available: exact, cubature)\n"},
+        {"--rect 0.1 0.1 --fy 1e8 --tol 1e-6", "section-calc: error: --tol, --order and --max-area go with --method cubature\n"},
+        {"--rect 0.1 0.1 --fy 1e8 --method cubature --tol 1e-6 --order 3", "section-calc: error: give --tol (adaptive rule) or --order (fixed rule), not both\n"},
+        {"--rect 0.1 0.1 --fy 1e8 --method cubature --tol 1e-20", "section-calc: error: cubature: the tolerance must be between 1e-13 and 0.1 (got 1e-20)\n"},
+        {"--rect 0.1 0.1 --fy 1e8 --method cubature --order 0", "section-calc: error: cubature: the order must be a whole number from 1 to 100 (got 0)\n"},
+        {"--rect 0.1 0.1 --fy 1e8 --method cubature --max-area -1", "section-calc: error: cubature: the largest triangle area must be a finite number ≥ 0 m² (got -1)\n"},
+        {"--rect 0.1 0.1 --fy 1e8 --svg /nonexistent/dir/x.svg", "section-calc: error: --svg /nonexistent/dir/x.svg: cannot write the file (No such file or directory)\n"},
         {"/nonexistent.json", "section-calc: error: /nonexistent.json: cannot open the file\n"},
     };
     for (const auto& c : cases) {

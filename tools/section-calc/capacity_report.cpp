@@ -45,6 +45,15 @@ std::string shear_rule(ShearCriterion shear) {
     return shear == ShearCriterion::Tresca ? "Tresca, τy = fy/2" : "von Mises, τy = fy/√3";
 }
 
+std::string method_line(const ReportContext& context) {
+    if (!context.cubature_options) return context.method + " (closed forms over the polygons)";
+    const CubatureOptions& o = *context.cubature_options;
+    std::string text = o.rule == CubatureRule::Adaptive ? format("cubature, adaptive to %.3g relative", o.tolerance)
+                                                        : format("cubature, Gauss–Legendre %g × %g per triangle", o.order, o.order);
+    if (o.max_area > 0.0) text += format(", triangles ≤ %.3g m²", o.max_area);
+    return text;
+}
+
 }  // namespace
 
 std::string capacity_table(const Capacities& c, const ReportContext& context) {
@@ -54,19 +63,24 @@ std::string capacity_table(const Capacities& c, const ReportContext& context) {
     out << "section     " << context.source << "\n"
         << "            " << context.section->parts().size() << " part(s), " << holes << " hole(s), "
         << context.section->vertex_count() << " vertices\n"
-        << "method      " << context.method << "; shear " << shear_rule(c.shear) << "\n"
+        << "method      " << method_line(context) << "\n"
+        << "shear       " << shear_rule(c.shear) << "\n"
         << "area        " << format("%.10g m²", c.area) << "\n"
         << "centroid    " << format("x = %.10g m, z = %.10g m", c.centroid.x, c.centroid.z) << "\n";
     if (c.z_pna) out << "Mx axis     " << format("z = %.10g m (plastic neutral axis, equal force)", *c.z_pna) << "\n";
     if (c.x_pna) out << "Mz axis     " << format("x = %.10g m (plastic neutral axis, equal force)", *c.x_pna) << "\n";
     if (c.reference) out << "joint point " << format("x = %.10g m, z = %.10g m (My)", c.reference->x, c.reference->z) << "\n";
-    out << "\n  capacity  value              unit  meaning\n";
+    if (context.cubature)
+        out << "mesh        " << context.cubature->triangles << " triangles, " << context.cubature->evaluations
+            << " integrand evaluations, " << format("%.3g ms", context.cubature->seconds * 1e3) << "\n";
+    out << "\n  capacity  value              " << (context.cubature ? "± estimated error  " : "") << "unit  meaning\n";
     for (const Row& row : kRows) {
         const std::optional<double> value = c.get(row.capacity);
         if (!value) continue;
-        char line[160];
-        std::snprintf(line, sizeof line, "  %-8s  %-17.10g  %s  %s\n", to_string(row.capacity).c_str(), *value,
-                      padded(row.unit, 4).c_str(), row.meaning);
+        char line[200];
+        const std::string error = context.cubature ? format("± %-16.2e ", *context.cubature->estimated_error(row.capacity)) : "";
+        std::snprintf(line, sizeof line, "  %-8s  %-17.10g  %s%s  %s\n", to_string(row.capacity).c_str(), *value,
+                      error.c_str(), padded(row.unit, 4).c_str(), row.meaning);
         out << line;
     }
     return out.str();
@@ -83,6 +97,20 @@ std::string capacity_json(const Capacities& c, const ReportContext& context) {
     if (c.reference) out["reference"] = {c.reference->x, c.reference->z};
     out["shear"] = to_string(c.shear);
     out["method"] = context.method;
+    if (context.cubature) {
+        const CubatureOptions& o = *context.cubature_options;
+        nlohmann::ordered_json errors;
+        for (Capacity capacity : kAllCapacities)
+            if (const std::optional<double> e = context.cubature->estimated_error(capacity)) errors[to_string(capacity)] = *e;
+        out["errors"] = errors;  // estimated absolute error of each capacity, same units
+        out["triangles"] = context.cubature->triangles;
+        out["evaluations"] = context.cubature->evaluations;
+        out["seconds"] = context.cubature->seconds;
+        out["cubature"] = {{"rule", o.rule == CubatureRule::Adaptive ? "adaptive" : "fixed"}};
+        if (o.rule == CubatureRule::Adaptive) out["cubature"]["tolerance"] = o.tolerance;
+        else out["cubature"]["order"] = o.order;
+        out["cubature"]["max_area"] = o.max_area;
+    }
     out["parts"] = context.section->parts().size();
     out["vertices"] = context.section->vertex_count();
     out["units"] = {{"force", "N"}, {"moment", "N*m"}, {"length", "m"}, {"area", "m^2"}};

@@ -10,8 +10,10 @@
 #include <vector>
 
 #include "capacity_report.hpp"
+#include "section_svg.hpp"
 #include "plascap/input_error.hpp"
 #include "plascap/sections/capacities.hpp"
+#include "plascap/sections/cubature.hpp"
 #include "plascap/sections/section_json.hpp"
 #include "plascap/sections/shapes.hpp"
 
@@ -25,6 +27,10 @@ struct Options {
     std::vector<double> reference;
     std::string only;
     std::string method = "exact";
+    std::optional<double> tolerance;
+    std::optional<int> order;
+    std::optional<double> max_area;
+    std::string svg;
     bool json = false;
 };
 
@@ -36,7 +42,17 @@ void add_options(CLI::App& app, Options& o) {
     app.add_option("--reference", o.reference, "Joint point X Z [m] for My; overrides the file (default: centroid)")
         ->expected(2);
     app.add_option("--only", o.only, "Compute only these capacities, e.g. N,My (from N, Qx, Qz, Mx, Mz, My)");
-    app.add_option("--method", o.method, "Integration route: exact (closed forms over the polygons)")->capture_default_str();
+    app.add_option("--method", o.method,
+                   "Integration route: exact (closed forms over the polygons) or cubature (CGAL mesh + GSL cubature, "
+                   "with error estimates)")
+        ->capture_default_str();
+    app.add_option("--tol", o.tolerance, "cubature: adaptive rule to this relative tolerance per triangle, 1e-13 to 0.1 "
+                                         "(default 1e-10)");
+    app.add_option("--order", o.order, "cubature: fixed Gauss–Legendre rule with this many points per direction, 1 to 100, "
+                                       "instead of the adaptive rule");
+    app.add_option("--max-area", o.max_area, "cubature: largest triangle area [m²] (default: no bound, the "
+                                             "constrained triangulation as it is)");
+    app.add_option("--svg", o.svg, "Also draw the section, its mesh, neutral axes, centroid and joint point to this SVG file");
     app.add_flag("--json", o.json, "Print one JSON object instead of the table");
     app.set_version_flag("--version", "section-calc (plascap) 0.1.0");
 }
@@ -84,9 +100,30 @@ plascap::ValidSection validated(const plascap::Section& section, const std::stri
     }
 }
 
+// The cubature options from the command line; refuses them with --method exact.
+plascap::CubatureOptions cubature_options(const Options& o) {
+    if (o.method != "cubature") {
+        if (o.tolerance || o.order || o.max_area)
+            throw plascap::InputError("--tol, --order and --max-area go with --method cubature");
+        return {};
+    }
+    if (o.tolerance && o.order)
+        throw plascap::InputError("give --tol (adaptive rule) or --order (fixed rule), not both");
+    plascap::CubatureOptions options;
+    if (o.tolerance) options.tolerance = *o.tolerance;
+    if (o.order) {
+        options.rule = plascap::CubatureRule::Fixed;
+        options.order = *o.order;
+    }
+    if (o.max_area) options.max_area = *o.max_area;
+    plascap::validate_cubature_options(options);
+    return options;
+}
+
 int run(const Options& o) {
-    if (o.method != "exact")
-        throw plascap::InputError("--method " + o.method + ": unknown method (available: exact)");
+    if (o.method != "exact" && o.method != "cubature")
+        throw plascap::InputError("--method " + o.method + ": unknown method (available: exact, cubature)");
+    const plascap::CubatureOptions cubature = cubature_options(o);
     const plascap::CapacitySet wanted =
         o.only.empty() ? plascap::CapacitySet::all() : plascap::CapacitySet::parse(o.only);
     std::string source;
@@ -95,8 +132,16 @@ int run(const Options& o) {
     if (!o.reference.empty()) section.reference = plascap::Point{o.reference[0], o.reference[1]};
 
     const plascap::ValidSection valid = validated(section, o.file.empty() ? "" : source);
-    const plascap::Capacities capacities = plascap::compute_capacities(valid, wanted);
-    const plascap::tools::ReportContext context{source, o.method, &valid};
+    plascap::tools::ReportContext context{source, o.method, &valid};
+    std::optional<plascap::CubatureResult> cubature_result;
+    if (o.method == "cubature") {
+        cubature_result = plascap::cubature_capacities(valid, wanted, cubature);
+        context.cubature_options = &cubature;
+        context.cubature = &*cubature_result;
+    }
+    const plascap::Capacities capacities =
+        cubature_result ? cubature_result->capacities : plascap::compute_capacities(valid, wanted);
+    if (!o.svg.empty()) plascap::tools::write_section_svg(o.svg, valid, capacities, cubature.max_area, source);
     std::cout << (o.json ? plascap::tools::capacity_json(capacities, context)
                          : plascap::tools::capacity_table(capacities, context));
     return 0;
