@@ -159,6 +159,9 @@ CubatureResult cubature_capacities(const ValidSection& section, CapacitySet want
 
     MeshOptions mesh_options;
     mesh_options.max_area = options.max_area;
+    // The fixed rule's estimate compares two Gauss orders; that says something only where every
+    // triangle resolves the integrand, which long slivers (a 1:1000 strip's triangulation) do not.
+    mesh_options.refine_shape = options.rule == CubatureRule::Fixed;
     double z_pna = 0.0, x_pna = 0.0;
     if (wanted.contains(Capacity::Mx)) {
         z_pna = detail::mesh_neutral_axis(plain, fy_of_part, BendingAxis::X);
@@ -178,7 +181,8 @@ CubatureResult cubature_capacities(const ValidSection& section, CapacitySet want
             snap_cuts_to_joint(mesh_options, joint, extent(plain));
         }
     }
-    const bool remesh = mesh_options.z_cut || mesh_options.x_cut || mesh_options.vertex || mesh_options.max_area > 0.0;
+    const bool remesh = mesh_options.z_cut || mesh_options.x_cut || mesh_options.vertex || mesh_options.max_area > 0.0 ||
+                        mesh_options.refine_shape;
     const SectionMesh mesh = remesh ? mesh_section(section, mesh_options) : plain;
 
     const TriangleRule rule = make_rule(options);

@@ -190,7 +190,7 @@ TriangleRule TriangleRule::fixed(int order) {
     auto impl = std::make_unique<Impl>();
     impl->adaptive = false;
     impl->high = gauss_legendre(order);
-    impl->low = gauss_legendre((order + 1) / 2);
+    impl->low = gauss_legendre(order == 1 ? 2 : (order + 1) / 2);  // the 1-point rule has no lower one
     return TriangleRule(std::move(impl));
 }
 

@@ -41,7 +41,8 @@ public:
     // in w, each to the relative tolerance. Error = outer estimate + the largest inner one.
     static TriangleRule adaptive(double relative_tolerance);
     // Gauss–Legendre tensor rule (gsl_integration_glfixed) with `order` points per direction.
-    // Error = |Q(order) − Q(⌈order/2⌉)|: the lower rule's error, which bounds the higher one's.
+    // Error = |Q(order) − Q(⌈order/2⌉)|: the lower rule's error, which bounds the higher one's
+    // (for order 1, |Q(1) − Q(2)|).
     static TriangleRule fixed(int order);
     // Both add round-off bounds: 4ε·Σ|wᵢ·fᵢ| for the sums, and that of the Jacobian 2·area.
 

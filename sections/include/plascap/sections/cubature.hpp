@@ -22,7 +22,9 @@ struct CubatureOptions {
     CubatureRule rule = CubatureRule::Adaptive;
     double tolerance = 1e-10;  // Adaptive: relative tolerance per triangle, in [1e-13, 0.1]
     int order = 8;             // Fixed: Gauss points per direction, in [1, 100]
-    double max_area = 0.0;     // largest triangle [m²]; 0: the constrained triangulation as it is
+    // Largest triangle [m²]; 0: no size bound. The adaptive rule integrates the constrained
+    // triangulation as it is; the fixed rule always refines it for shape (angles ≥ 20.7°).
+    double max_area = 0.0;
     // Mesh edges on the plastic neutral axes and a mesh vertex at the joint point, so every
     // integrand is smooth in every triangle. Off only to measure what that is worth.
     bool conforming = true;
