@@ -29,9 +29,9 @@ CliRun section_calc(const std::string& arguments) {
     char buffer[4096];
     while (std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) out.append(buffer, n);
     const int status = pclose(pipe);
-    std::ifstream err_stream(err_file);
     std::stringstream err;
-    err << err_stream.rdbuf();
+    err << std::ifstream(err_file).rdbuf();
+    std::remove(err_file.c_str());
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out, err.str()};
 }
 
