@@ -209,6 +209,30 @@ TEST(CubatureExtremes, HundredThousandVertexPolygon) {
     expect_agrees("100000-gon", circle, options, 1e-8);
 }
 
+// A star with a 2.6e-10 m edge at a sharp angle, found by a random sweep: Delaunay refinement for
+// shape kept splitting there (1.8 GB in 45 s). The vertex budget stops it; the route finishes, says
+// so, and its estimates still hold here.
+TEST(CubatureExtremes, RefinementBudgetStopsRunawayMeshing) {
+    const Ring star = {{0.375, 0}, {0.37499999987500005, 2.25e-10}, {0.25, 0.125}, {0.5, 0.125}, {0.375, 0.25},
+                       {0.375, 0.5}, {0.25, 0.25}, {0.25, 0.375}, {0.125, 0.625}, {0, 0.375}, {0, 0.875},
+                       {-0.125, 0.375}, {-0.25, 0.625}, {-0.375, 0.5}, {-0.375, 0.375}, {-0.5, 0.375},
+                       {-0.375, 0.25}, {-0.25, 0.125}, {-0.875, 0.25}, {-0.5, 0}, {-0.625, 0}, {-0.5, -0.125},
+                       {-0.875, -0.375}, {-0.625, -0.375}, {-0.5, -0.375}, {-0.5, -0.5}, {-0.5, -0.75},
+                       {-0.375, -0.875}, {-0.125, -0.5}, {-0.125, -0.75}, {0, -1}, {0, -0.5}, {0.125, -0.375},
+                       {0.25, -0.5}, {0.625, -0.75}, {0.625, -0.625}, {0.375, -0.25}, {0.75, -0.5},
+                       {0.375, -0.125}, {0.5, -0.125}, {0.75, -0.125}};
+    const ValidSection section = validate_section(section_of({part(star, 1e8)}));
+    CubatureOptions options;
+    options.rule = CubatureRule::Fixed;
+    options.order = 3;
+    const CubatureResult result = cubature_capacities(section, CapacitySet::all(), options);
+    EXPECT_TRUE(result.refinement_stopped);
+    EXPECT_LT(result.triangles, 100000u);
+    expect_agrees("star with a 2.6e-10 m edge", section, options, 1e-3);
+    options.rule = CubatureRule::Adaptive;  // no refinement asked: nothing to stop
+    EXPECT_FALSE(cubature_capacities(section, CapacitySet::all(), options).refinement_stopped);
+}
+
 TEST(CubatureOptionsCheck, OutOfRangeOptionsAreRefusedByName) {
     const ValidSection square = validate_section(section_of({part(box(0, 0, 1, 1), 235e6)}));
     const auto message = [&](CubatureOptions o) {

@@ -120,6 +120,7 @@ TEST(SectionCalc, CubatureMethodJson) {
     EXPECT_LE(j["errors"]["My"].get<double>(), 2 * 38.26 * 1e-9);
     EXPECT_GT(j["triangles"].get<int>(), 0);
     EXPECT_GT(j["seconds"].get<double>(), 0.0);
+    EXPECT_EQ(j["refinement_stopped"], false);
     EXPECT_EQ(j["cubature"]["rule"], "adaptive");
     EXPECT_EQ(j["cubature"]["tolerance"].get<double>(), 1e-9);
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -58,13 +59,23 @@ private:
     Point c_;
 };
 
-struct Sum {
-    double value = 0.0;
-    double error = 0.0;
+// Compensated (Neumaier) sum of the triangles' contributions: thousands of triangles would
+// otherwise lose n·ε to the summation itself.
+class Sum {
+public:
     void add(double factor, const Estimate& e) {
-        value += factor * e.value;
-        error += factor * e.error;
+        const double term = factor * e.value;
+        const double t = value_ + term;
+        compensation_ += std::abs(value_) >= std::abs(term) ? (value_ - t) + term : (term - t) + value_;
+        value_ = t;
+        error_ += factor * e.error;
     }
+    double value() const { return value_ + compensation_; }
+    // The triangles' estimates, plus the rounding of the compensated sum (2ε of the total).
+    double error() const { return error_ + 2.0 * std::numeric_limits<double>::epsilon() * std::abs(value()); }
+
+private:
+    double value_ = 0.0, compensation_ = 0.0, error_ = 0.0;
 };
 
 struct AreaAndCentroid {
@@ -207,8 +218,8 @@ CubatureResult cubature_capacities(const ValidSection& section, CapacitySet want
 
     const auto store = [&](Capacity c, std::optional<double>& slot, const Sum& sum) {
         if (!wanted.contains(c)) return;
-        slot = sum.value;
-        result.error[static_cast<std::size_t>(c)] = sum.error;
+        slot = sum.value();
+        result.error[static_cast<std::size_t>(c)] = sum.error();
     };
     store(Capacity::N, capacities.N, force);
     store(Capacity::Qx, capacities.Qx, shear);
@@ -217,6 +228,7 @@ CubatureResult cubature_capacities(const ValidSection& section, CapacitySet want
     store(Capacity::Mz, capacities.Mz, mz);
     store(Capacity::My, capacities.My, my);
     result.triangles = mesh.triangles.size();
+    result.refinement_stopped = mesh.refinement_stopped;
     result.evaluations = rule.evaluations();
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;

@@ -48,13 +48,25 @@ public:
 
     // Marks the faces inside the part (odd nesting level across ring edges; cut edges do not
     // count), then refines them when asked.
-    void mark_and_refine(const MeshOptions& options) {
+    // Marks the faces inside the part (odd nesting level across ring edges; chords do not count),
+    // then refines them when asked, within a budget of vertices. Returns false when the budget
+    // stopped the refinement.
+    bool mark_and_refine(const MeshOptions& options, double part_area) {
         mark_domain();
-        if (options.max_area > 0.0 || options.refine_shape) {
-            // A triangle whose longest edge is ≤ S has area ≤ (√3/4)·S² (the equilateral one).
-            const double max_edge = options.max_area > 0.0 ? std::sqrt(4.0 * options.max_area / std::sqrt(3.0)) : 0.0;
-            CGAL::refine_Delaunay_mesh_2(cdt_, Criteria(0.125, max_edge), true);
+        if (options.max_area <= 0.0 && !options.refine_shape) return true;
+        // A triangle whose longest edge is ≤ S has area ≤ (√3/4)·S² (the equilateral one).
+        const double max_edge = options.max_area > 0.0 ? std::sqrt(4.0 * options.max_area / std::sqrt(3.0)) : 0.0;
+        CGAL::Delaunay_mesher_2<Cdt, Criteria> mesher(cdt_, Criteria(0.125, max_edge));
+        mesher.init(true);
+        // Delaunay refinement can keep splitting near a feature or angle too small for doubles; a
+        // well-posed mesh needs far fewer vertices than this.
+        const double size_share = options.max_area > 0.0 ? 4.0 * part_area / options.max_area : 0.0;
+        const double budget = 50.0 * static_cast<double>(cdt_.number_of_vertices()) + size_share + 10000.0;
+        while (!mesher.is_refinement_done()) {
+            if (static_cast<double>(cdt_.number_of_vertices()) > budget) return false;
+            mesher.try_one_step_refine_mesh();
         }
+        return true;
     }
 
     void append_to(SectionMesh& mesh, std::size_t part_index) {
@@ -131,15 +143,18 @@ private:
     std::set<ConstraintId> ring_constraints_;
 };
 
-// Shoelace area of the outer rings: an upper bound of the section's area.
+double ring_area(const Ring& ring) {  // shoelace
+    double area = 0.0;
+    for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++)
+        area += 0.5 * (ring[j].x * ring[i].z - ring[i].x * ring[j].z);
+    return std::abs(area);
+}
+
+// The outer rings' area: an upper bound of the section's.
 double outer_area(const ValidSection& section) {
     double area = 0.0;
-    for (const Part& part : section.parts()) {
-        const Ring& ring = part.outer;
-        for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++)
-            area += 0.5 * (ring[j].x * ring[i].z - ring[i].x * ring[j].z);
-    }
-    return std::abs(area);
+    for (const Part& part : section.parts()) area += ring_area(part.outer);
+    return area;
 }
 
 constexpr double kMaxTriangles = 5e6;  // about 1 GB of CGAL triangulation; beyond it, refuse
@@ -160,7 +175,7 @@ SectionMesh mesh_section(const ValidSection& section, const MeshOptions& options
     for (std::size_t p = 0; p < section.parts().size(); ++p) {
         PartTriangulation triangulation(
             detail::plan_mesh_cuts(section.parts()[p], options.z_cut, options.x_cut, options.vertex));
-        triangulation.mark_and_refine(options);
+        if (!triangulation.mark_and_refine(options, ring_area(section.parts()[p].outer))) mesh.refinement_stopped = true;
         triangulation.append_to(mesh, p);
     }
     return mesh;

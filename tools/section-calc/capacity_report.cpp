@@ -73,6 +73,9 @@ std::string capacity_table(const Capacities& c, const ReportContext& context) {
     if (context.cubature)
         out << "mesh        " << context.cubature->triangles << " triangles, " << context.cubature->evaluations
             << " integrand evaluations, " << format("%.3g ms", context.cubature->seconds * 1e3) << "\n";
+    if (context.cubature && context.cubature->refinement_stopped)
+        out << "            refinement stopped at its vertex budget (a feature or angle too small to resolve):\n"
+            << "            some triangles miss the shape/size bounds, and the fixed rule's estimates may be low\n";
     out << "\n  capacity  value              " << (context.cubature ? "± estimated error  " : "") << "unit  meaning\n";
     for (const Row& row : kRows) {
         const std::optional<double> value = c.get(row.capacity);
@@ -106,6 +109,7 @@ std::string capacity_json(const Capacities& c, const ReportContext& context) {
         out["triangles"] = context.cubature->triangles;
         out["evaluations"] = context.cubature->evaluations;
         out["seconds"] = context.cubature->seconds;
+        out["refinement_stopped"] = context.cubature->refinement_stopped;
         out["cubature"] = {{"rule", o.rule == CubatureRule::Adaptive ? "adaptive" : "fixed"}};
         if (o.rule == CubatureRule::Adaptive) out["cubature"]["tolerance"] = o.tolerance;
         else out["cubature"]["order"] = o.order;

@@ -39,6 +39,7 @@ struct CubatureResult {
     std::size_t triangles = 0;                    // in the mesh that was integrated
     std::size_t evaluations = 0;                  // integrand evaluations
     double seconds = 0.0;                         // wall time of the whole route, meshing included
+    bool refinement_stopped = false;              // see SectionMesh::refinement_stopped
 
     std::optional<double> estimated_error(Capacity c) const { return error[static_cast<std::size_t>(c)]; }
 };

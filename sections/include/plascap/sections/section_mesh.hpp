@@ -33,6 +33,10 @@ struct SectionMesh {
     std::vector<Point> vertices;                        // local coordinates [m]
     std::vector<std::array<std::size_t, 3>> triangles;  // counter-clockwise vertex indices
     std::vector<std::size_t> part_of;                   // the part each triangle lies in
+    // True when Delaunay refinement ran out of its vertex budget (50 per input vertex, plus 4 per
+    // max_area of the part, plus 10,000) before every triangle met the bounds: a feature or an
+    // angle too small to resolve in doubles. The mesh is still a valid triangulation.
+    bool refinement_stopped = false;
 };
 
 // Meshes every part (holes left out). Throws InputError when max_area is negative or not finite.
