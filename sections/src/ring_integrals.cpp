@@ -35,6 +35,9 @@ LevelPoint crossing(LevelPoint a, LevelPoint b) {
     return {0.0, a.v + lambda * (b.v - a.v)};
 }
 
+// i + 1, wrapping to 0: the integer division of (i + 1) % n costs more than an edge's arithmetic.
+inline std::size_t next_index(std::size_t i, std::size_t n) { return i + 1 == n ? 0 : i + 1; }
+
 }  // namespace
 
 RingMoments ring_moments(const Ring& ring) {
@@ -42,7 +45,7 @@ RingMoments ring_moments(const Ring& ring) {
     const std::size_t n = ring.size();
     for (std::size_t i = 0; i < n; ++i) {
         const Point p = ring[i];
-        const Point q = ring[(i + 1) % n];
+        const Point q = ring[next_index(i, n)];
         const double cross = p.x * q.z - q.x * p.z;
         m.area += cross;
         m.Sx += (p.x + q.x) * cross;
@@ -66,7 +69,7 @@ LevelCut cut_at(const Ring& ring, BendingAxis axis, double t) {
         else cut.vertex_above = std::min(cut.vertex_above, level);
 
         const LevelPoint a = to_level(ring[i], axis, t);
-        const LevelPoint b = to_level(ring[(i + 1) % n], axis, t);
+        const LevelPoint b = to_level(ring[next_index(i, n)], axis, t);
         if (a.u <= 0.0 && b.u <= 0.0) {
             add_segment(a, b, area_below, moment_below);
         } else if (a.u >= 0.0 && b.u >= 0.0) {
@@ -116,7 +119,7 @@ Chords chord_lengths(const Ring& ring, BendingAxis axis, double a, double b) {
     const std::size_t n = ring.size();
     for (std::size_t i = 0; i < n; ++i) {
         const LevelPoint p = to_level(ring[i], axis, 0.0);
-        const LevelPoint q = to_level(ring[(i + 1) % n], axis, 0.0);
+        const LevelPoint q = to_level(ring[next_index(i, n)], axis, 0.0);
         const double lo = std::fmin(p.u, q.u);
         const double hi = std::fmax(p.u, q.u);
         if (lo == hi || lo > a || hi < b) continue;  // edge does not span [a, b]
