@@ -174,7 +174,7 @@ TEST(SectionCalc, BadCommandLines) {
         {"", "section-calc: error: no section: give FILE or --rect B H --fy FY (see --help)\n"},
         {"--rect 0.1 0.1", "section-calc: error: --rect needs --fy FY, the yield stress in Pa\n"},
         {"--rect -0.1 0.1 --fy 1e8", "section-calc: error: --rect: width B [m] must be a positive finite number (got -0.1)\n"},
-        {"--rect 0.1 0.1 --fy -1e8", "section-calc: error: part 0, material: yield stress fy must be a positive finite number in Pa (got -100000000)\n"},
+        {"--rect 0.1 0.1 --fy -1e8", "section-calc: error: part 0, material: yield stress fy must be a finite number >= 0 in Pa (got -100000000)\n"},
         {"--rect 0.1 0.1 --fy 1e8 --only N,Mq", "section-calc: error: unknown capacity 'Mq' (choose from N, Qx, Qz, Mx, Mz, My)\n"},
         {"--rect 0.1 0.1 --fy 1e8 --shear rankine", "section-calc: error: unknown shear criterion 'rankine' (choose \"tresca\" or \"von-mises\")\n"},
         {"--rect 0.1 0.1 --fy 1e8 --method magic", "section-calc: error: --method magic: unknown method (available: exact, cubature)\n"},
@@ -212,7 +212,7 @@ TEST(SectionCalc, BadInputFiles) {
         {"wrong-type.json", "parts[0].outer[1][1]: expected a number, got string"},
         {"unknown-key.json", "parts[0]: unknown key \"hole\""},
         {"missing-material.json", "parts[0]: no material"},
-        {"unknown-material-name.json", "material: material \"Unobtainium\": named materials need the materials catalogue"},
+        {"unknown-material-name.json", "material: unknown material \"Unobtainium\" (section-calc --list-materials shows them all)"},
         {"no-parts.json", "section: has no parts"},
         {"too-few-vertices.json", "part 0, outer ring: has 2 distinct vertices; a ring needs at least 3"},
         {"repeated-vertex.json", "part 0, outer ring, vertex 2: repeats vertex 1"},
@@ -224,8 +224,8 @@ TEST(SectionCalc, BadInputFiles) {
         {"hole-crossing.json", "part 0, hole 0, vertex 0: touches or crosses its outer ring (its edge 0-1 meets edge 1-2"},
         {"holes-overlapping.json", "part 0, hole 1, vertex 0: overlaps or touches hole 0 of the same part"},
         {"parts-overlapping.json", "part 1: overlaps part 0"},
-        {"negative-yield-stress.json", "part 0, material: yield stress fy must be a positive finite number in Pa (got -200000000)"},
-        {"zero-yield-stress.json", "part 0, material: yield stress fy must be a positive finite number in Pa (got 0)"},
+        {"negative-yield-stress.json", "material: yield stress fy must be a finite number >= 0 in Pa (got -200000000)"},
+        {"zero-yield-stress.json", "parts[0].material: the material has no strength: fy and fc are both 0"},
         {"unknown-shear.json", "shear: unknown shear criterion 'rankine'"},
     };
     for (const auto& c : cases) {

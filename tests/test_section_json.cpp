@@ -92,9 +92,30 @@ TEST(SectionJson, UnknownShearCriterion) {
               R"(shear: unknown shear criterion 'rankine' (choose "tresca" or "von-mises"))");
 }
 
-TEST(SectionJson, NamedMaterialsAreNotAvailableYet) {
-    const std::string message = refusal(R"({"material": "S355", "parts": []})");
-    EXPECT_EQ(message.rfind(R"(material: material "S355": named materials need the materials catalogue)", 0), 0u) << message;
+TEST(SectionJson, NamedMaterialsComeFromTheCatalogue) {
+    const Section s = parse_section_json(
+        R"({"material": "S355", "parts": [{"outer": [[0, 0], [1, 0], [1, 1]]}, {"outer": [[2, 0], [3, 0], [3, 1]], "material": "s235"}]})");
+    EXPECT_EQ(s.parts[0].material.name, "S355");
+    EXPECT_EQ(s.parts[0].material.fy, 355e6);
+    EXPECT_EQ(s.parts[0].material.E, 210e9);
+    EXPECT_EQ(s.parts[1].material.fy, 235e6);  // names ignore case
+    EXPECT_EQ(refusal(R"({"material": "S335", "parts": []})"), R"(material: unknown material "S335" (did you mean S235, S355, S275?))");
+}
+
+TEST(SectionJson, MaterialObjectsCarryEveryProperty) {
+    const Section s = parse_section_json(
+        R"({"parts": [{"outer": [[0, 0], [1, 0], [1, 1]], "material": {"name": "mine", "fy": 3e8, "E": 2e11, "nu": 0.25, "density": 7000, "ultimate_strain": 0.2, "max_plastic_rotation": 0.3, "shear": "von-mises"}}]})");
+    const Material& m = s.parts[0].material;
+    EXPECT_EQ(m.name, "mine");
+    EXPECT_EQ(*m.shear_modulus(), 2e11 / 2.5);
+    EXPECT_EQ(*m.density, 7000.0);
+    EXPECT_EQ(*m.max_plastic_rotation, 0.3);
+    EXPECT_EQ(m.shear, ShearCriterion::VonMises);
+    EXPECT_EQ(refusal(R"({"parts": [{"outer": [[0, 0], [1, 0], [1, 1]], "material": {"fy": 3e8, "nu": 0.7}}]})"),
+              "parts[0].material: Poisson's ratio nu must be within (-1, 0.5] (got 0.69999999999999996)");
+    EXPECT_EQ(refusal(R"({"parts": [{"outer": [[0, 0], [1, 0], [1, 1]], "material": {"fy": 3e8, "colour": "red"}}]})").rfind(
+                  R"(parts[0].material: unknown key "colour" in a material)", 0),
+              0u);
 }
 
 TEST(SectionJson, UnreadableFileIsNamed) {

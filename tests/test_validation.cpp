@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "plascap/input_error.hpp"
+#include "plascap/materials/catalogue.hpp"
 #include "plascap/sections/shapes.hpp"
 #include "test_support.hpp"
 
@@ -136,11 +137,19 @@ TEST(Validation, RoundOffOverlapOfASharedEdgeIsAccepted) {
     EXPECT_EQ(real.rfind("part 1: overlaps part 0 by 1.0000000", 0), 0u) << real;
 }
 
-TEST(Validation, YieldStressMustBePositiveAndFinite) {
+TEST(Validation, YieldStressMustBeFiniteAndNonNegative) {
     EXPECT_REFUSED(section_of({part(box(0, 0, 1, 1), 1e8), part(box(1, 0, 2, 1), -2e8)}),
-                   "part 1, material: yield stress fy must be a positive finite number in Pa (got -200000000)");
+                   "part 1, material: yield stress fy must be a finite number >= 0 in Pa (got -200000000)");
     EXPECT_REFUSED(section_of({part(box(0, 0, 1, 1), kNaN)}),
-                   "part 0, material: yield stress fy must be a positive finite number in Pa (got nan)");
+                   "part 0, material: yield stress fy must be a finite number >= 0 in Pa (got nan)");
+}
+
+// Until the routes compute both signs, a material with fc != fy is refused, never used with fy alone.
+TEST(Validation, DifferentTensionAndCompressionStrengthsAreRefusedForNow) {
+    Section s = rectangle_section(0.1, 0.1, 1e8);
+    s.parts[0].material = MaterialCatalogue::built_in().get("C25/30", "test");
+    EXPECT_REFUSED(s, "part 0, material \"C25/30\": tension fy = 0 Pa and compression fc = 25000000 Pa differ; "
+                      "capacities for such materials are not available yet (only fc = fy)");
 }
 
 TEST(Validation, JointPointMustBeFinite) {

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "plascap/input_error.hpp"
+#include "plascap/materials/material_json.hpp"
 
 namespace plascap {
 namespace {
@@ -49,24 +50,15 @@ Ring read_ring(const json& value, const std::string& where) {
     return ring;
 }
 
-Material read_material(const json& value, const std::string& where) {
-    if (value.is_string())
-        fail(where, "material \"" + value.get<std::string>() +
-                        "\": named materials need the materials catalogue, which plascap does not have yet; "
-                        "give an object such as {\"fy\": 355e6}");
-    if (!value.is_object()) fail(where, "expected a material object such as {\"fy\": 355e6}, got " + type_name(value));
-    reject_unknown_keys(value, where, {"fy", "name"});
-    if (!value.contains("fy")) fail(where, "the material has no yield stress \"fy\" [Pa]");
-    Material material;
-    material.fy = read_number(value["fy"], where + ".fy");
-    if (value.contains("name")) {
-        if (!value["name"].is_string()) fail(where + ".name", "expected a string, got " + type_name(value["name"]));
-        material.name = value["name"].get<std::string>();
-    }
-    return material;
+// A material: a catalogue name ("S355") or an object (materials/material_json.hpp).
+Material read_material(const json& value, const std::string& where, const MaterialCatalogue& catalogue) {
+    if (value.is_string()) return catalogue.get(value.get<std::string>(), where);
+    if (!value.is_object()) fail(where, "expected a material name such as \"S355\" or an object such as {\"fy\": 355e6}, got " + type_name(value));
+    return parse_material_json(value.dump(), where);
 }
 
-Part read_part(const json& value, const std::string& where, const std::optional<Material>& default_material) {
+Part read_part(const json& value, const std::string& where, const std::optional<Material>& default_material,
+               const MaterialCatalogue& catalogue) {
     if (!value.is_object()) fail(where, "expected a part object {\"outer\": [...], \"holes\": [...]}, got " + type_name(value));
     reject_unknown_keys(value, where, {"outer", "holes", "material", "name"});
     if (!value.contains("outer")) fail(where, "the part has no \"outer\" ring");
@@ -79,7 +71,7 @@ Part read_part(const json& value, const std::string& where, const std::optional<
             part.holes.push_back(read_ring(holes[h], where + ".holes[" + std::to_string(h) + "]"));
     }
     if (value.contains("material")) {
-        part.material = read_material(value["material"], where + ".material");
+        part.material = read_material(value["material"], where + ".material", catalogue);
     } else if (default_material) {
         part.material = *default_material;
     } else {
@@ -121,7 +113,7 @@ json parse_json(std::string_view text) {
 
 }  // namespace
 
-Section parse_section_json(std::string_view text) {
+Section parse_section_json(std::string_view text, const MaterialCatalogue& catalogue) {
     const json root = parse_json(text);
     if (!root.is_object()) fail("section", "expected a JSON object with \"parts\", got " + type_name(root));
     reject_unknown_keys(root, "section", {"shear", "reference", "material", "parts", "name", "description"});
@@ -137,23 +129,23 @@ Section parse_section_json(std::string_view text) {
     }
     if (root.contains("reference")) section.reference = read_point(root["reference"], "reference");
     std::optional<Material> default_material;
-    if (root.contains("material")) default_material = read_material(root["material"], "material");
+    if (root.contains("material")) default_material = read_material(root["material"], "material", catalogue);
 
     if (!root.contains("parts")) fail("section", "has no \"parts\"");
     const json& parts = root["parts"];
     if (!parts.is_array()) fail("parts", "expected an array of parts, got " + type_name(parts));
     for (std::size_t p = 0; p < parts.size(); ++p)
-        section.parts.push_back(read_part(parts[p], "parts[" + std::to_string(p) + "]", default_material));
+        section.parts.push_back(read_part(parts[p], "parts[" + std::to_string(p) + "]", default_material, catalogue));
     return section;
 }
 
-Section read_section_file(const std::string& path) {
+Section read_section_file(const std::string& path, const MaterialCatalogue& catalogue) {
     std::ifstream file(path, std::ios::binary);
     if (!file) throw InputError(path + ": cannot open the file");
     std::ostringstream text;
     text << file.rdbuf();
     try {
-        return parse_section_json(text.str());
+        return parse_section_json(text.str(), catalogue);
     } catch (const InputError& e) {
         throw InputError(path + ": " + e.what());
     }
