@@ -156,12 +156,43 @@ TEST(SectionCalc, SvgDrawing) {
     std::remove(path.c_str());
 }
 
+// The catalogue: listed for people and for programs (with every value's source), used by name for
+// a --rect section or every part of a file, extended by a user's file.
+TEST(SectionCalc, MaterialsCatalogue) {
+    const CliRun table = section_calc("--list-materials");
+    ASSERT_EQ(table.exit_code, 0) << table.err;
+    EXPECT_NE(table.out.find("\nS355           355     355     210    0.3"), std::string::npos) << table.out;
+    const CliRun listing = section_calc("--list-materials --json");
+    ASSERT_EQ(listing.exit_code, 0) << listing.err;
+    const nlohmann::json all = nlohmann::json::parse(listing.out);
+    ASSERT_GE(all.size(), 12u);
+    for (const auto& m : all) EXPECT_TRUE(m["sources"].contains("fy")) << m["name"];
+
+    const CliRun rect = section_calc("--rect 0.1 0.2 --material S355 --only N,Mx --json");
+    ASSERT_EQ(rect.exit_code, 0) << rect.err;
+    const nlohmann::json r = nlohmann::json::parse(rect.out);
+    EXPECT_LT(relative_error(r["N"].get<double>(), 355e6 * 0.02), 1e-12);
+    EXPECT_LT(relative_error(r["Mx"].get<double>(), 355e6 * 0.1 * 0.04 / 4.0), 1e-12);
+
+    const CliRun override_file = section_calc("--material s235 --only N --json \"" + example("t-section.json") + "\"");
+    ASSERT_EQ(override_file.exit_code, 0) << override_file.err;
+    EXPECT_LT(relative_error(nlohmann::json::parse(override_file.out)["N"].get<double>(), 235e6 * 0.003), 1e-12);
+
+    const std::string user = ::testing::TempDir() + "materials_" + std::to_string(getpid()) + ".json";
+    std::ofstream(user) << R"({"format": "plascap-materials-1", "materials": [{"name": "Ti-6Al-4V", "fy": 880e6}]})";
+    const CliRun titanium = section_calc("--materials \"" + user + "\" --rect 0.01 0.01 --material ti-6al-4v --only N --json");
+    ASSERT_EQ(titanium.exit_code, 0) << titanium.err;
+    EXPECT_LT(relative_error(nlohmann::json::parse(titanium.out)["N"].get<double>(), 880e6 * 1e-4), 1e-12);
+    std::remove(user.c_str());
+}
+
 // Every option is documented in --help.
 TEST(SectionCalc, HelpListsEveryOption) {
     const CliRun run = section_calc("--help");
     EXPECT_EQ(run.exit_code, 0);
-    for (const char* option : {"FILE", "--rect", "--fy", "--shear", "--reference", "--only", "--method", "--tol", "--order",
-                               "--max-area", "--svg", "--json", "--version"})
+    for (const char* option : {"FILE", "--rect", "--fy", "--material", "--materials", "--list-materials", "--shear",
+                               "--reference", "--only", "--method", "--tol", "--order", "--max-area", "--svg", "--json",
+                               "--version"})
         EXPECT_NE(run.out.find(option), std::string::npos) << option;
 }
 
@@ -172,12 +203,16 @@ TEST(SectionCalc, BadCommandLines) {
         const char* message;
     } cases[] = {
         {"", "section-calc: error: no section: give FILE or --rect B H --fy FY (see --help)\n"},
-        {"--rect 0.1 0.1", "section-calc: error: --rect needs --fy FY, the yield stress in Pa\n"},
+        {"--rect 0.1 0.1", "section-calc: error: --rect needs --fy FY, the yield stress in Pa, or --material NAME\n"},
         {"--rect -0.1 0.1 --fy 1e8", "section-calc: error: --rect: width B [m] must be a positive finite number (got -0.1)\n"},
         {"--rect 0.1 0.1 --fy -1e8", "section-calc: error: part 0, material: yield stress fy must be a finite number >= 0 in Pa (got -100000000)\n"},
         {"--rect 0.1 0.1 --fy 1e8 --only N,Mq", "section-calc: error: unknown capacity 'Mq' (choose from N, Qx, Qz, Mx, Mz, My)\n"},
         {"--rect 0.1 0.1 --fy 1e8 --shear rankine", "section-calc: error: unknown shear criterion 'rankine' (choose \"tresca\" or \"von-mises\")\n"},
         {"--rect 0.1 0.1 --fy 1e8 --method magic", "section-calc: error: --method magic: unknown method (available: exact, cubature)\n"},
+        {"--rect 0.1 0.1 --material S335", "section-calc: error: --material: unknown material \"S335\" (did you mean S235, S355, S275?)\n"},
+        {"--rect 0.1 0.1 --fy 1e8 --material S355", "section-calc: error: give --fy or --material, not both\n"},
+        {"--rect 0.1 0.1 --material C25/30", "section-calc: error: part 0, material \"C25/30\": tension fy = 0 Pa and compression fc = 25000000 Pa differ; capacities for such materials are not available yet (only fc = fy)\n"},
+        {"--materials /nonexistent/m.json --list-materials", "section-calc: error: /nonexistent/m.json: cannot open the materials file\n"},
         {"--rect 0.1 0.1 --fy 1e8 --tol 1e-6", "section-calc: error: --tol, --order and --max-area go with --method cubature\n"},
         {"--rect 0.1 0.1 --fy 1e8 --method cubature --tol 1e-6 --order 3", "section-calc: error: give --tol (adaptive rule) or --order (fixed rule), not both\n"},
         {"--rect 0.1 0.1 --fy 1e8 --method cubature --tol 1e-20", "section-calc: error: cubature: the tolerance must be between 1e-13 and 0.1 (got 1e-20)\n"},

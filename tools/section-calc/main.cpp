@@ -10,8 +10,10 @@
 #include <vector>
 
 #include "capacity_report.hpp"
+#include "material_listing.hpp"
 #include "section_svg.hpp"
 #include "plascap/input_error.hpp"
+#include "plascap/materials/catalogue.hpp"
 #include "plascap/sections/capacities.hpp"
 #include "plascap/sections/cubature.hpp"
 #include "plascap/sections/section_json.hpp"
@@ -31,6 +33,9 @@ struct Options {
     std::optional<int> order;
     std::optional<double> max_area;
     std::string svg;
+    std::string material;
+    std::vector<std::string> material_files;
+    bool list_materials = false;
     bool json = false;
 };
 
@@ -38,6 +43,11 @@ void add_options(CLI::App& app, Options& o) {
     app.add_option("FILE", o.file, "Section file (JSON, format in docs/section-format.md); - reads standard input");
     app.add_option("--rect", o.rect, "Shortcut: a centred rectangle, B along x and H along z [m]")->expected(2);
     app.add_option("--fy", o.fy, "Yield stress [Pa] of the --rect section");
+    app.add_option("--material", o.material, "Catalogue material for every part (or the --rect section), e.g. S355; "
+                                             "overrides the file");
+    app.add_option("--materials", o.material_files, "Add a materials file (format: docs/materials.md) to the catalogue; "
+                                                    "may be given more than once, later files replace same-named entries");
+    app.add_flag("--list-materials", o.list_materials, "Print the materials catalogue (with --json: every value and its source)");
     app.add_option("--shear", o.shear, "Shear criterion: tresca (τy = fy/2) or von-mises (τy = fy/√3); overrides the file");
     app.add_option("--reference", o.reference, "Joint point X Z [m] for My; overrides the file (default: centroid)")
         ->expected(2);
@@ -68,23 +78,32 @@ void require_positive(double value, const std::string& what) {
         throw plascap::InputError(what + " must be a positive finite number (got " + number(value) + ")");
 }
 
-plascap::Section load_section(const Options& o, std::string& source) {
+// The built-in catalogue plus the --materials files.
+plascap::MaterialCatalogue load_catalogue(const Options& o) {
+    plascap::MaterialCatalogue catalogue = plascap::MaterialCatalogue::built_in();
+    for (const std::string& file : o.material_files) catalogue.add(plascap::MaterialCatalogue::read_file(file));
+    return catalogue;
+}
+
+plascap::Section load_section(const Options& o, const plascap::MaterialCatalogue& catalogue, std::string& source) {
     if (!o.file.empty() && !o.rect.empty()) throw plascap::InputError("give either FILE or --rect B H, not both");
     if (o.file.empty() && o.rect.empty()) throw plascap::InputError("no section: give FILE or --rect B H --fy FY (see --help)");
     if (!o.rect.empty()) {
-        if (!o.fy) throw plascap::InputError("--rect needs --fy FY, the yield stress in Pa");
+        if (!o.fy && o.material.empty())
+            throw plascap::InputError("--rect needs --fy FY, the yield stress in Pa, or --material NAME");
+        if (o.fy && !o.material.empty()) throw plascap::InputError("give --fy or --material, not both");
         require_positive(o.rect[0], "--rect: width B [m]");
         require_positive(o.rect[1], "--rect: height H [m]");
         source = "--rect " + number(o.rect[0]) + " x " + number(o.rect[1]) + " m";
-        return plascap::rectangle_section(o.rect[0], o.rect[1], *o.fy);
+        return plascap::rectangle_section(o.rect[0], o.rect[1], o.fy.value_or(1.0));  // --material replaces it
     }
-    if (o.fy) throw plascap::InputError("--fy goes with --rect; a section file gives its own materials");
+    if (o.fy) throw plascap::InputError("--fy goes with --rect; a section file gives its own materials (or use --material)");
     source = o.file == "-" ? "standard input" : o.file;
-    if (o.file != "-") return plascap::read_section_file(o.file);
+    if (o.file != "-") return plascap::read_section_file(o.file, catalogue);
     std::ostringstream text;
     text << std::cin.rdbuf();
     try {
-        return plascap::parse_section_json(text.str());
+        return plascap::parse_section_json(text.str(), catalogue);
     } catch (const plascap::InputError& e) {
         throw plascap::InputError(source + ": " + e.what());
     }
@@ -126,8 +145,17 @@ int run(const Options& o) {
     const plascap::CubatureOptions cubature = cubature_options(o);
     const plascap::CapacitySet wanted =
         o.only.empty() ? plascap::CapacitySet::all() : plascap::CapacitySet::parse(o.only);
+    const plascap::MaterialCatalogue catalogue = load_catalogue(o);
+    if (o.list_materials) {
+        std::cout << (o.json ? plascap::tools::material_json(catalogue) : plascap::tools::material_table(catalogue));
+        return 0;
+    }
     std::string source;
-    plascap::Section section = load_section(o, source);
+    plascap::Section section = load_section(o, catalogue, source);
+    if (!o.material.empty()) {
+        const plascap::Material& material = catalogue.get(o.material, "--material");
+        for (plascap::Part& part : section.parts) part.material = material;
+    }
     if (o.shear) section.shear = plascap::parse_shear_criterion(*o.shear);
     if (!o.reference.empty()) section.reference = plascap::Point{o.reference[0], o.reference[1]};
 
