@@ -35,8 +35,8 @@ BENCHMARK(PaperSquareTorsionOnly)->Unit(benchmark::kMicrosecond);
 void PaperSquareMeshOnly(benchmark::State& state) {
     const plascap::ValidSection section = paper_square();
     plascap::MeshOptions options;
-    options.z_cut = 0.0;
-    options.x_cut = 0.0;
+    options.z_cuts = {0.0};
+    options.x_cuts = {0.0};
     options.vertex = plascap::Point{0.0, 0.0};
     for (auto _ : state) benchmark::DoNotOptimize(plascap::mesh_section(section, options));
 }

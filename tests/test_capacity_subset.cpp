@@ -28,6 +28,6 @@ TEST(CapacitySubset, ParsesCommaSeparatedNames) {
         CapacitySet::parse("N,Mq");
         FAIL();
     } catch (const InputError& e) {
-        EXPECT_STREQ(e.what(), "unknown capacity 'Mq' (choose from N, Qx, Qz, Mx, Mz, My)");
+        EXPECT_STREQ(e.what(), "unknown capacity 'Mq' (choose from N, Qx, Qz, Mx, Mz, My, N_neg, Mx_neg, Mz_neg)");
     }
 }

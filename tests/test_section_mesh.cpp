@@ -72,8 +72,8 @@ TEST(SectionMesh, ConformsToCutsAndJointPoint) {
     for (double max_area : {0.0, 2e-5}) {
         MeshOptions options;
         options.max_area = max_area;
-        options.z_cut = s.to_local({0, 100 * mm}).z;
-        options.x_cut = s.to_local({3 * mm, 0}).x;
+        options.z_cuts = {s.to_local({0, 100 * mm}).z};
+        options.x_cuts = {s.to_local({3 * mm, 0}).x};
         options.vertex = s.to_local({3 * mm, 50 * mm});
         const SectionMesh m = mesh_section(s, options);
         bool has_vertex = false;
@@ -82,10 +82,10 @@ TEST(SectionMesh, ConformsToCutsAndJointPoint) {
         for (const auto& t : m.triangles) {
             int below_z = 0, above_z = 0, left = 0, right = 0;
             for (std::size_t k : t) {
-                below_z += m.vertices[k].z < *options.z_cut;
-                above_z += m.vertices[k].z > *options.z_cut;
-                left += m.vertices[k].x < *options.x_cut;
-                right += m.vertices[k].x > *options.x_cut;
+                below_z += m.vertices[k].z < options.z_cuts[0];
+                above_z += m.vertices[k].z > options.z_cuts[0];
+                left += m.vertices[k].x < options.x_cuts[0];
+                right += m.vertices[k].x > options.x_cuts[0];
             }
             EXPECT_FALSE(below_z > 0 && above_z > 0) << "a triangle straddles the horizontal cut";
             EXPECT_FALSE(left > 0 && right > 0) << "a triangle straddles the vertical cut";

@@ -6,7 +6,6 @@
 #include <limits>
 
 #include "plascap/input_error.hpp"
-#include "plascap/materials/catalogue.hpp"
 #include "plascap/sections/shapes.hpp"
 #include "test_support.hpp"
 
@@ -142,14 +141,6 @@ TEST(Validation, YieldStressMustBeFiniteAndNonNegative) {
                    "part 1, material: yield stress fy must be a finite number >= 0 in Pa (got -200000000)");
     EXPECT_REFUSED(section_of({part(box(0, 0, 1, 1), kNaN)}),
                    "part 0, material: yield stress fy must be a finite number >= 0 in Pa (got nan)");
-}
-
-// Until the routes compute both signs, a material with fc != fy is refused, never used with fy alone.
-TEST(Validation, DifferentTensionAndCompressionStrengthsAreRefusedForNow) {
-    Section s = rectangle_section(0.1, 0.1, 1e8);
-    s.parts[0].material = MaterialCatalogue::built_in().get("C25/30", "test");
-    EXPECT_REFUSED(s, "part 0, material \"C25/30\": tension fy = 0 Pa and compression fc = 25000000 Pa differ; "
-                      "capacities for such materials are not available yet (only fc = fy)");
 }
 
 TEST(Validation, JointPointMustBeFinite) {

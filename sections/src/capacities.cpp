@@ -8,6 +8,7 @@ namespace {
 
 struct PartTotals {
     double force = 0.0;        // Σ fy·A  [N]
+    double compression = 0.0;  // Σ fc·A  [N]
     double shear_force = 0.0;  // Σ τy·A  [N]
     RingMoments moments;       // ∫dA, ∫x dA, ∫z dA over the whole section (local coordinates)
 };
@@ -17,6 +18,7 @@ PartTotals sum_parts(const ValidSection& section) {
     for (const Part& part : section.parts()) {
         const RingMoments m = part_moments(part);
         totals.force += part.material.fy * m.area;                                          // eq. 2.10
+        totals.compression += part.material.compression_strength() * m.area;               // eq. 2.10 with fc
         totals.shear_force += shear_yield_stress(part.material.fy, section.shear()) * m.area;  // eq. 2.11
         totals.moments.area += m.area;
         totals.moments.Sx += m.Sx;
@@ -36,6 +38,13 @@ double torsion_capacity(const ValidSection& section, Point c) {
     return moment;
 }
 
+// True when every part has fc = fy: then each _neg capacity equals its counterpart.
+bool same_strength_both_ways(const ValidSection& section) {
+    for (const Part& part : section.parts())
+        if (part.material.compression_strength() != part.material.fy) return false;
+    return true;
+}
+
 }  // namespace
 
 std::optional<double> Capacities::get(Capacity c) const {
@@ -46,6 +55,9 @@ std::optional<double> Capacities::get(Capacity c) const {
         case Capacity::Mx: return Mx;
         case Capacity::Mz: return Mz;
         case Capacity::My: return My;
+        case Capacity::N_neg: return N_neg;
+        case Capacity::Mx_neg: return Mx_neg;
+        case Capacity::Mz_neg: return Mz_neg;
     }
     return std::nullopt;
 }
@@ -59,18 +71,25 @@ Capacities compute_capacities(const ValidSection& section, CapacitySet wanted) {
     result.centroid = section.to_section(local_centroid);
 
     if (wanted.contains(Capacity::N)) result.N = totals.force;
+    if (wanted.contains(Capacity::N_neg)) result.N_neg = totals.compression;
     if (wanted.contains(Capacity::Qx)) result.Qx = totals.shear_force;
     if (wanted.contains(Capacity::Qz)) result.Qz = totals.shear_force;
-    if (wanted.contains(Capacity::Mx)) {
-        const PlasticBending bending = plastic_bending(section, BendingAxis::X);  // eq. 2.12
-        result.Mx = bending.moment;
-        result.z_pna = bending.axis + section.local_origin().z;
-    }
-    if (wanted.contains(Capacity::Mz)) {
-        const PlasticBending bending = plastic_bending(section, BendingAxis::Z);  // eq. 2.13
-        result.Mz = bending.moment;
-        result.x_pna = bending.axis + section.local_origin().x;
-    }
+    const bool symmetric = same_strength_both_ways(section);
+    const auto bending = [&](BendingAxis axis, bool negative, std::optional<double>& moment, std::optional<double>& level) {
+        const PlasticBending b = plastic_bending(section, axis, tension_side(axis, negative));  // eqs. 2.12, 2.13
+        moment = b.moment;
+        level = b.axis + (axis == BendingAxis::X ? section.local_origin().z : section.local_origin().x);
+    };
+    const auto both_signs = [&](BendingAxis axis, Capacity positive, Capacity negative, std::optional<double>& m,
+                                std::optional<double>& level, std::optional<double>& m_neg, std::optional<double>& level_neg) {
+        const bool want = wanted.contains(positive), want_neg = wanted.contains(negative);
+        if (want || (want_neg && symmetric)) bending(axis, false, m, level);
+        if (want_neg && symmetric) m_neg = m, level_neg = level;
+        else if (want_neg) bending(axis, true, m_neg, level_neg);
+        if (!want) m.reset(), level.reset();
+    };
+    both_signs(BendingAxis::X, Capacity::Mx, Capacity::Mx_neg, result.Mx, result.z_pna, result.Mx_neg, result.z_pna_neg);
+    both_signs(BendingAxis::Z, Capacity::Mz, Capacity::Mz_neg, result.Mz, result.x_pna, result.Mz_neg, result.x_pna_neg);
     if (wanted.contains(Capacity::My)) {
         const Point c = section.reference() ? section.to_local(*section.reference()) : local_centroid;
         result.My = torsion_capacity(section, c);

@@ -12,6 +12,9 @@ std::string to_string(Capacity capacity) {
         case Capacity::Mx: return "Mx";
         case Capacity::Mz: return "Mz";
         case Capacity::My: return "My";
+        case Capacity::N_neg: return "N_neg";
+        case Capacity::Mx_neg: return "Mx_neg";
+        case Capacity::Mz_neg: return "Mz_neg";
     }
     return "?";
 }
@@ -32,7 +35,7 @@ CapacitySet CapacitySet::parse(std::string_view list) {
             }
         }
         if (!known)
-            throw InputError("unknown capacity '" + std::string(name) + "' (choose from N, Qx, Qz, Mx, Mz, My)");
+            throw InputError("unknown capacity '" + std::string(name) + "' (choose from N, Qx, Qz, Mx, Mz, My, N_neg, Mx_neg, Mz_neg)");
         start = comma + 1;
     }
     return set;

@@ -4,10 +4,12 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "mesh_neutral_axis.hpp"
+#include "plascap/sections/plastic_bending.hpp"
 #include "plascap/input_error.hpp"
 #include "plascap/sections/section_mesh.hpp"
 #include "triangle_cubature.hpp"
@@ -26,10 +28,15 @@ public:
     detail::PolynomialDegree degree_on(const Triangle&) const override { return {0, 0}; }
 };
 
-class DistanceFromAxis final : public Integrand {  // |z − z_pna| or |x − x_pna| (eqs. 2.12, 2.13)
+// s·|z − z_pna| or s·|x − x_pna| (eqs. 2.12, 2.13), s the strength on p's side of the axis.
+class DistanceFromAxis final : public Integrand {
 public:
-    DistanceFromAxis(BendingAxis axis, double level) : axis_(axis), level_(level) {}
-    double operator()(Point p) const override { return std::abs(level_of(p, axis_) - level_); }
+    DistanceFromAxis(BendingAxis axis, double level, double below, double above)
+        : axis_(axis), level_(level), below_(below), above_(above) {}
+    double operator()(Point p) const override {
+        const double d = level_of(p, axis_) - level_;
+        return d < 0.0 ? -below_ * d : above_ * d;
+    }
     // Linear where the triangle lies on one side of the axis: the map p(u, w) is bilinear.
     // A corner within round-off of the axis (its mesh edge is a constructed intersection) counts
     // as on it; the kink it misses spans a sliver of that width.
@@ -43,6 +50,7 @@ public:
 private:
     BendingAxis axis_;
     double level_;
+    double below_, above_;
 };
 
 class DistanceFromPoint final : public Integrand {  // |p − c| (eq. 2.14)
@@ -123,8 +131,10 @@ double extent(const SectionMesh& mesh) {
 // now misses by δ costs O(δ²).
 void snap_cuts_to_joint(MeshOptions& mesh, Point joint, double extent) {
     const double near = 1e-12 * extent;
-    if (mesh.z_cut && std::abs(*mesh.z_cut - joint.z) <= near) mesh.z_cut = joint.z;
-    if (mesh.x_cut && std::abs(*mesh.x_cut - joint.x) <= near) mesh.x_cut = joint.x;
+    for (double& z : mesh.z_cuts)
+        if (std::abs(z - joint.z) <= near) z = joint.z;
+    for (double& x : mesh.x_cuts)
+        if (std::abs(x - joint.x) <= near) x = joint.x;
 }
 
 TriangleRule make_rule(const CubatureOptions& options) {
@@ -136,6 +146,69 @@ std::string number(double value) {
     char text[32];
     std::snprintf(text, sizeof text, "%g", value);
     return text;
+}
+
+// One bending capacity to integrate: its axis, the strength each part has below and above it,
+// the axis level, and the running sum. A _neg capacity of a section with fc = fy everywhere is a
+// copy of its counterpart.
+struct Bending {
+    Capacity capacity;
+    BendingAxis axis;
+    std::vector<detail::SideStrengths> strength;  // by part
+    double level = 0.0;                           // local coordinates
+    std::optional<std::size_t> copy_of;
+    Sum sum;
+};
+
+std::vector<detail::SideStrengths> side_strengths(const ValidSection& section, BendingAxis axis, bool negative) {
+    std::vector<detail::SideStrengths> strengths;
+    for (const Part& part : section.parts()) {
+        const double fy = part.material.fy, fc = part.material.compression_strength();
+        const bool tension_below = tension_side(axis, negative) == TensionSide::Below;
+        strengths.push_back(tension_below ? detail::SideStrengths{fy, fc} : detail::SideStrengths{fc, fy});
+    }
+    return strengths;
+}
+
+std::vector<Bending> wanted_bendings(const ValidSection& section, CapacitySet wanted) {
+    bool symmetric = true;
+    for (const Part& part : section.parts()) symmetric = symmetric && part.material.compression_strength() == part.material.fy;
+    struct Kind {
+        Capacity capacity, twin;
+        BendingAxis axis;
+        bool negative;
+    };
+    const Kind kinds[] = {{Capacity::Mx, Capacity::Mx_neg, BendingAxis::X, false},
+                          {Capacity::Mz, Capacity::Mz_neg, BendingAxis::Z, false},
+                          {Capacity::Mx_neg, Capacity::Mx, BendingAxis::X, true},
+                          {Capacity::Mz_neg, Capacity::Mz, BendingAxis::Z, true}};
+    std::vector<Bending> bendings;
+    for (const Kind& k : kinds) {
+        if (!wanted.contains(k.capacity)) continue;
+        Bending b{k.capacity, k.axis, side_strengths(section, k.axis, k.negative), 0.0, std::nullopt, Sum()};
+        for (std::size_t i = 0; i < bendings.size(); ++i)
+            if (symmetric && bendings[i].capacity == k.twin) b.copy_of = i;
+        bendings.push_back(std::move(b));
+    }
+    return bendings;
+}
+
+std::optional<double>& capacities_slot(Capacities& c, Capacity k) {
+    switch (k) {
+        case Capacity::Mx: return c.Mx;
+        case Capacity::Mz: return c.Mz;
+        case Capacity::Mx_neg: return c.Mx_neg;
+        default: return c.Mz_neg;
+    }
+}
+
+std::optional<double>& level_slot(Capacities& c, Capacity k) {
+    switch (k) {
+        case Capacity::Mx: return c.z_pna;
+        case Capacity::Mz: return c.x_pna;
+        case Capacity::Mx_neg: return c.z_pna_neg;
+        default: return c.x_pna_neg;
+    }
 }
 
 }  // namespace
@@ -158,9 +231,6 @@ CubatureResult cubature_capacities(const ValidSection& section, CapacitySet want
     Capacities& capacities = result.capacities;
     capacities.shear = section.shear();
 
-    std::vector<double> fy_of_part;
-    for (const Part& part : section.parts()) fy_of_part.push_back(part.material.fy);
-
     // A first triangulation gives the area, the centroid and the neutral axes; the second
     // conforms to the kinks they define.
     const SectionMesh plain = mesh_section(section);
@@ -173,16 +243,10 @@ CubatureResult cubature_capacities(const ValidSection& section, CapacitySet want
     // The fixed rule's estimate compares two Gauss orders; that says something only where every
     // triangle resolves the integrand, which long slivers (a 1:1000 strip's triangulation) do not.
     mesh_options.refine_shape = options.rule == CubatureRule::Fixed;
-    double z_pna = 0.0, x_pna = 0.0;
-    if (wanted.contains(Capacity::Mx)) {
-        z_pna = detail::mesh_neutral_axis(plain, fy_of_part, BendingAxis::X);
-        capacities.z_pna = z_pna + section.local_origin().z;
-        if (options.conforming) mesh_options.z_cut = z_pna;
-    }
-    if (wanted.contains(Capacity::Mz)) {
-        x_pna = detail::mesh_neutral_axis(plain, fy_of_part, BendingAxis::Z);
-        capacities.x_pna = x_pna + section.local_origin().x;
-        if (options.conforming) mesh_options.x_cut = x_pna;
+    std::vector<Bending> bendings = wanted_bendings(section, wanted);
+    for (Bending& b : bendings) {
+        b.level = detail::mesh_neutral_axis(plain, b.strength, b.axis);
+        if (options.conforming) (b.axis == BendingAxis::X ? mesh_options.z_cuts : mesh_options.x_cuts).push_back(b.level);
     }
     const Point joint = section.reference() ? section.to_local(*section.reference()) : geometry.centroid;
     if (wanted.contains(Capacity::My)) {
@@ -192,28 +256,32 @@ CubatureResult cubature_capacities(const ValidSection& section, CapacitySet want
             snap_cuts_to_joint(mesh_options, joint, extent(plain));
         }
     }
-    const bool remesh = mesh_options.z_cut || mesh_options.x_cut || mesh_options.vertex || mesh_options.max_area > 0.0 ||
-                        mesh_options.refine_shape;
+    const bool remesh = !mesh_options.z_cuts.empty() || !mesh_options.x_cuts.empty() || mesh_options.vertex ||
+                        mesh_options.max_area > 0.0 || mesh_options.refine_shape;
     const SectionMesh mesh = remesh ? mesh_section(section, mesh_options) : plain;
 
     const TriangleRule rule = make_rule(options);
     const Unit unit;
-    const DistanceFromAxis from_z_axis(BendingAxis::X, z_pna), from_x_axis(BendingAxis::Z, x_pna);
     const DistanceFromPoint from_joint(joint);
-    const bool want_area = wanted.contains(Capacity::N) || wanted.contains(Capacity::Qx) || wanted.contains(Capacity::Qz);
-    Sum force, shear, mx, mz, my;
+    const bool want_area = wanted.contains(Capacity::N) || wanted.contains(Capacity::N_neg) ||
+                           wanted.contains(Capacity::Qx) || wanted.contains(Capacity::Qz);
+    Sum force, compression, shear, my;
     for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
         const Triangle triangle = oriented_triangle(mesh, i, joint);
-        const double fy = fy_of_part[mesh.part_of[i]];
-        const double tau = shear_yield_stress(fy, section.shear());
+        const Material& material = section.parts()[mesh.part_of[i]].material;
+        const double tau = shear_yield_stress(material.fy, section.shear());
         if (want_area) {
             const Estimate area = rule.integrate(triangle, unit);
-            force.add(fy, area);   // eq. 2.10
-            shear.add(tau, area);  // eq. 2.11
+            force.add(material.fy, area);                            // eq. 2.10
+            compression.add(material.compression_strength(), area);  // eq. 2.10 with fc
+            shear.add(tau, area);                                     // eq. 2.11
         }
-        if (wanted.contains(Capacity::Mx)) mx.add(fy, rule.integrate(triangle, from_z_axis));   // eq. 2.12
-        if (wanted.contains(Capacity::Mz)) mz.add(fy, rule.integrate(triangle, from_x_axis));   // eq. 2.13
-        if (wanted.contains(Capacity::My)) my.add(tau, rule.integrate(triangle, from_joint));   // eq. 2.14
+        for (Bending& b : bendings) {  // eqs. 2.12, 2.13, each side with its own strength
+            if (b.copy_of) continue;
+            const detail::SideStrengths strength = b.strength[mesh.part_of[i]];
+            b.sum.add(1.0, rule.integrate(triangle, DistanceFromAxis(b.axis, b.level, strength.below, strength.above)));
+        }
+        if (wanted.contains(Capacity::My)) my.add(tau, rule.integrate(triangle, from_joint));  // eq. 2.14
     }
 
     const auto store = [&](Capacity c, std::optional<double>& slot, const Sum& sum) {
@@ -222,11 +290,16 @@ CubatureResult cubature_capacities(const ValidSection& section, CapacitySet want
         result.error[static_cast<std::size_t>(c)] = sum.error();
     };
     store(Capacity::N, capacities.N, force);
+    store(Capacity::N_neg, capacities.N_neg, compression);
     store(Capacity::Qx, capacities.Qx, shear);
     store(Capacity::Qz, capacities.Qz, shear);
-    store(Capacity::Mx, capacities.Mx, mx);
-    store(Capacity::Mz, capacities.Mz, mz);
     store(Capacity::My, capacities.My, my);
+    for (const Bending& b : bendings) {
+        const Bending& source = b.copy_of ? bendings[*b.copy_of] : b;
+        store(b.capacity, capacities_slot(capacities, b.capacity), source.sum);
+        level_slot(capacities, b.capacity) =
+            b.level + (b.axis == BendingAxis::X ? section.local_origin().z : section.local_origin().x);
+    }
     result.triangles = mesh.triangles.size();
     result.refinement_stopped = mesh.refinement_stopped;
     result.evaluations = rule.evaluations();

@@ -177,12 +177,18 @@ bool vertex_fits(const std::vector<Ring>& rings, const std::vector<Line>& lines,
 
 }  // namespace
 
-MeshCuts plan_mesh_cuts(const Part& part, std::optional<double> z_cut, std::optional<double> x_cut,
+MeshCuts plan_mesh_cuts(const Part& part, const std::vector<double>& z_cuts, const std::vector<double>& x_cuts,
                         std::optional<Point> vertex) {
     const double near = kNear * part_size(part);
     std::vector<Line> lines;
-    if (z_cut) lines.push_back({BendingAxis::X, snapped_level(part, {BendingAxis::X, *z_cut}, near)});
-    if (x_cut) lines.push_back({BendingAxis::Z, snapped_level(part, {BendingAxis::Z, *x_cut}, near)});
+    const auto add_line = [&](BendingAxis axis, double level) {
+        const Line line{axis, snapped_level(part, {axis, level}, near)};
+        for (const Line& taken : lines)
+            if (taken.axis == axis && std::abs(taken.level - line.level) <= near) return;  // one line, not a sliver
+        lines.push_back(line);
+    };
+    for (double z : z_cuts) add_line(BendingAxis::X, z);
+    for (double x : x_cuts) add_line(BendingAxis::Z, x);
 
     MeshCuts cuts;
     cuts.rings.push_back(with_crossings(part.outer, lines));

@@ -21,10 +21,11 @@ struct MeshCuts {
     std::optional<Point> vertex;                   // the joint point, when it should be inserted
 };
 
-// z_cut: the line z = z_cut; x_cut: the line x = x_cut; vertex: the joint point. The vertex is
+// z_cuts: the lines z = z_cut; x_cuts: the lines x = x_cut (a line within 1e-12 of the part size
+// of one already taken is left out); vertex: the joint point. The vertex is
 // left out when it lies outside the part's box, or within 1e-12 of the part's size from a ring
 // edge without being on it (a sliver that refinement could not resolve in doubles).
-MeshCuts plan_mesh_cuts(const Part& part, std::optional<double> z_cut, std::optional<double> x_cut,
+MeshCuts plan_mesh_cuts(const Part& part, const std::vector<double>& z_cuts, const std::vector<double>& x_cuts,
                         std::optional<Point> vertex);
 
 }  // namespace plascap::detail

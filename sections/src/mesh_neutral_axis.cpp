@@ -17,7 +17,7 @@ namespace {
 struct LevelTriangle {
     std::array<double, 3> level;  // sorted levels of the corners
     double area = 0.0;
-    double fy = 0.0;
+    SideStrengths strength;
 };
 
 // Area of the triangle beyond t (level > t). By similar triangles: the piece cut off at a corner
@@ -32,17 +32,20 @@ double area_above(const LevelTriangle& t, double level) {
 
 struct Balance {
     std::vector<LevelTriangle> triangles;
-    // Σ fy·(A_above − A_below): positive below the axis, negative above it.
+    // Σ s_above·A_above − s_below·A_below: positive below the axis, negative above it.
     double operator()(double level) const {
         double sum = 0.0;
-        for (const LevelTriangle& t : triangles) sum += t.fy * (2.0 * area_above(t, level) - t.area);
+        for (const LevelTriangle& t : triangles) {
+            const double above = area_above(t, level);
+            sum += t.strength.above * above - t.strength.below * (t.area - above);
+        }
         return sum;
     }
 };
 
 double balance_at(double level, void* balance) { return (*static_cast<const Balance*>(balance))(level); }
 
-Balance make_balance(const SectionMesh& mesh, const std::vector<double>& fy_of_part, BendingAxis axis) {
+Balance make_balance(const SectionMesh& mesh, const std::vector<SideStrengths>& strength_of_part, BendingAxis axis) {
     Balance balance;
     balance.triangles.reserve(mesh.triangles.size());
     for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
@@ -52,7 +55,7 @@ Balance make_balance(const SectionMesh& mesh, const std::vector<double>& fy_of_p
         t.level = {level_of(a, axis), level_of(b, axis), level_of(c, axis)};
         std::sort(t.level.begin(), t.level.end());
         t.area = 0.5 * std::abs((b.x - a.x) * (c.z - a.z) - (c.x - a.x) * (b.z - a.z));
-        t.fy = fy_of_part[mesh.part_of[i]];
+        t.strength = strength_of_part[mesh.part_of[i]];
         balance.triangles.push_back(t);
     }
     return balance;
@@ -71,9 +74,9 @@ double middle_of_gap(const Balance& balance, double t) {
 
 }  // namespace
 
-double mesh_neutral_axis(const SectionMesh& mesh, const std::vector<double>& fy_of_part, BendingAxis axis) {
+double mesh_neutral_axis(const SectionMesh& mesh, const std::vector<SideStrengths>& strength_of_part, BendingAxis axis) {
     const GslErrorsReturned errors_returned;
-    const Balance balance = make_balance(mesh, fy_of_part, axis);
+    const Balance balance = make_balance(mesh, strength_of_part, axis);
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (const LevelTriangle& t : balance.triangles) {
         lo = std::min(lo, t.level[0]);
@@ -83,7 +86,10 @@ double mesh_neutral_axis(const SectionMesh& mesh, const std::vector<double>& fy_
     std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> solver(
         gsl_root_fsolver_alloc(gsl_root_fsolver_brent), &gsl_root_fsolver_free);
     gsl_function f{&balance_at, const_cast<Balance*>(&balance)};
-    gsl_root_fsolver_set(solver.get(), &f, lo, hi);  // balance(lo) = +total > 0 > balance(hi)
+    // A side without strength (concrete in tension) puts the axis at the section's edge.
+    if (balance(hi) >= 0.0) return hi;
+    if (balance(lo) <= 0.0) return lo;
+    gsl_root_fsolver_set(solver.get(), &f, lo, hi);  // balance(lo) > 0 > balance(hi)
     for (int iteration = 0; iteration < 400; ++iteration) {
         if (gsl_root_fsolver_iterate(solver.get()) != GSL_SUCCESS) break;
         lo = gsl_root_fsolver_x_lower(solver.get());

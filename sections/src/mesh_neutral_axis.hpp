@@ -8,10 +8,15 @@
 
 namespace plascap::detail {
 
+// The strengths a part carries below and above the axis (fy on the tension side, fc on the other).
+struct SideStrengths {
+    double below = 0.0, above = 0.0;  // [Pa]
+};
+
 // The level t (z for BendingAxis::X, x for Z) where the yield force on either side is equal:
-// Σ fy·A(level > t) = Σ fy·A(level < t) (paper eqs. 2.12–2.13). Each triangle's area beyond t
+// Σ s_above·A(level > t) = Σ s_below·A(level < t) (paper eqs. 2.12–2.13). Each triangle's area beyond t
 // is exact (similar triangles); t is the root by Brent's method (gsl_root_fsolver_brent) to
 // round-off. Where the root is not unique (a gap without material), the middle of the gap.
-double mesh_neutral_axis(const SectionMesh& mesh, const std::vector<double>& fy_of_part, BendingAxis axis);
+double mesh_neutral_axis(const SectionMesh& mesh, const std::vector<SideStrengths>& strength_of_part, BendingAxis axis);
 
 }  // namespace plascap::detail

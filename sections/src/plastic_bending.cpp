@@ -10,34 +10,50 @@
 namespace plascap {
 namespace {
 
+// The strengths that act below and above the axis: tension fy on the tension side, compression
+// fc on the other.
+struct Strengths {
+    double below = 0.0, above = 0.0;  // [Pa]
+    double mean() const { return 0.5 * (below + above); }
+};
+
+Strengths strengths_of(const Material& material, TensionSide tension) {
+    const double fy = material.fy, fc = material.compression_strength();
+    return tension == TensionSide::Below ? Strengths{fy, fc} : Strengths{fc, fy};
+}
+
 template <class Visit>
-void for_each_ring(const ValidSection& section, Visit visit) {
+void for_each_ring(const ValidSection& section, TensionSide tension, Visit visit) {
     for (const Part& part : section.parts()) {
-        visit(part.outer, part.material.fy);
-        for (const Ring& hole : part.holes) visit(hole, part.material.fy);
+        const Strengths strengths = strengths_of(part.material, tension);
+        visit(part.outer, strengths);
+        for (const Ring& hole : part.holes) visit(hole, strengths);
     }
 }
 
-// The whole section cut at level t, yield-force weighted.
+// The whole section cut at level t, strength weighted. The force balance is carried as
+// deficit(t) = ½(F_above − F_below); its derivative is −Σ ½(s_below + s_above)·chord, so the
+// rates use the mean strength (with fc = fy: fy, as in the paper).
 struct SectionCut {
-    double force_below = 0.0;  // F(t) = Σ fy·A_below [N]
-    double force_above = 0.0;  // N − F(t)
-    double moment = 0.0;       // ∫ fy·|level − t| dA [N·m]
-    double rate = 0.0;         // dF/dt = Σ fy·chord (edges strictly crossing t)
-    double rate_slope = 0.0;   // d²F/dt²
+    double force_below = 0.0;  // Σ s_below·A_below [N]
+    double force_above = 0.0;  // Σ s_above·A_above [N]
+    double moment = 0.0;       // ∫ s·|level − t| dA [N·m]
+    double rate = 0.0;         // Σ s_mean·chord (edges strictly crossing t)
+    double rate_slope = 0.0;   // its derivative
     double a = -std::numeric_limits<double>::infinity();  // largest vertex level <= t
     double b = std::numeric_limits<double>::infinity();   // smallest vertex level > t
 };
 
-SectionCut cut_section(const ValidSection& section, BendingAxis axis, double t) {
+SectionCut cut_section(const ValidSection& section, BendingAxis axis, TensionSide tension, double t) {
     SectionCut s;
-    for_each_ring(section, [&](const Ring& ring, double fy) {
+    for_each_ring(section, tension, [&](const Ring& ring, Strengths strength) {
         const LevelCut c = cut_at(ring, axis, t);
-        s.force_below += fy * c.area_below;
-        s.force_above += fy * c.area_above;
-        s.moment += fy * (c.moment_above - c.moment_below);  // both sides positive: no cancellation
-        s.rate += fy * c.chord;
-        s.rate_slope += fy * c.chord_slope;
+        s.force_below += strength.below * c.area_below;
+        s.force_above += strength.above * c.area_above;
+        // Both sides positive (moment_below is ∫(level − t) < 0): no cancellation.
+        s.moment += strength.above * c.moment_above - strength.below * c.moment_below;
+        s.rate += strength.mean() * c.chord;
+        s.rate_slope += strength.mean() * c.chord_slope;
         s.a = std::max(s.a, c.vertex_below);
         s.b = std::min(s.b, c.vertex_above);
     });
@@ -46,12 +62,12 @@ SectionCut cut_section(const ValidSection& section, BendingAxis axis, double t) 
 
 // F' and F'' on the piece [a, b] when t = a is itself a vertex level (the edges ending at t do not
 // cross it strictly, so the cut cannot see them): from the chord lengths at both ends.
-void rates_from_piece_ends(const ValidSection& section, BendingAxis axis, SectionCut& cut) {
+void rates_from_piece_ends(const ValidSection& section, BendingAxis axis, TensionSide tension, SectionCut& cut) {
     double at_a = 0.0, at_b = 0.0;
-    for_each_ring(section, [&](const Ring& ring, double fy) {
+    for_each_ring(section, tension, [&](const Ring& ring, Strengths strength) {
         const Chords c = chord_lengths(ring, axis, cut.a, cut.b);
-        at_a += fy * c.at_a;
-        at_b += fy * c.at_b;
+        at_a += strength.mean() * c.at_a;
+        at_b += strength.mean() * c.at_b;
     });
     cut.rate = at_a;
     cut.rate_slope = (at_b - at_a) / (cut.b - cut.a);
@@ -65,35 +81,44 @@ double step_to_target(double deficit, double w, double k) {
     return denominator > 0.0 ? 2.0 * deficit / denominator : std::numeric_limits<double>::infinity();
 }
 
-// Per part: level range of the outer ring, force fy·A and force moment fy·∫level dA.
+// Per part: level range of the outer ring, its force on either side of an axis, and the
+// mean-strength weight and first moment for the starting guess.
 struct PartSummary {
     double lo, hi;
-    double force;
-    double force_moment;
+    double force_if_below;  // s_below·A
+    double force_if_above;  // s_above·A
+    double weight;          // s_mean·A
+    double weight_moment;   // s_mean·∫level dA
 };
 
-std::vector<PartSummary> summarize_parts(const ValidSection& section, BendingAxis axis) {
+std::vector<PartSummary> summarize_parts(const ValidSection& section, BendingAxis axis, TensionSide tension) {
     std::vector<PartSummary> parts;
     for (const Part& part : section.parts()) {
-        PartSummary s{level_of(part.outer[0], axis), level_of(part.outer[0], axis), 0.0, 0.0};
+        PartSummary s{level_of(part.outer[0], axis), level_of(part.outer[0], axis), 0.0, 0.0, 0.0, 0.0};
         for (Point q : part.outer) s.lo = std::min(s.lo, level_of(q, axis)), s.hi = std::max(s.hi, level_of(q, axis));
         const RingMoments m = part_moments(part);
-        s.force = part.material.fy * m.area;
-        s.force_moment = part.material.fy * (axis == BendingAxis::X ? m.Sz : m.Sx);
+        const Strengths strength = strengths_of(part.material, tension);
+        s.force_if_below = strength.below * m.area;
+        s.force_if_above = strength.above * m.area;
+        s.weight = strength.mean() * m.area;
+        s.weight_moment = strength.mean() * (axis == BendingAxis::X ? m.Sz : m.Sx);
         parts.push_back(s);
     }
     return parts;
 }
 
 // The axis is not unique when the parts split into a lower and an upper group, apart from each
-// other, with equal force up to round-off: then it is the middle of the gap between the groups.
-std::optional<double> middle_of_balanced_gap(std::vector<PartSummary> parts, double total) {
+// other, whose forces balance up to round-off: then it is the middle of the gap between the groups.
+std::optional<double> middle_of_balanced_gap(std::vector<PartSummary> parts) {
     std::sort(parts.begin(), parts.end(), [](const PartSummary& x, const PartSummary& y) { return x.lo < y.lo; });
-    const double round_off = 16.0 * std::numeric_limits<double>::epsilon() * total;
+    double force_above = 0.0, scale = 0.0;
+    for (const PartSummary& part : parts) force_above += part.force_if_above, scale += part.weight;
+    const double round_off = 16.0 * std::numeric_limits<double>::epsilon() * scale;
     double force_below = 0.0, top = parts[0].lo;
     for (const PartSummary& part : parts) {
-        if (part.lo > top && std::fabs(force_below - 0.5 * total) <= round_off) return 0.5 * (top + part.lo);
-        force_below += part.force;
+        if (part.lo > top && std::fabs(force_below - force_above) <= round_off) return 0.5 * (top + part.lo);
+        force_below += part.force_if_below;
+        force_above -= part.force_if_above;
         top = std::max(top, part.hi);
     }
     return std::nullopt;
@@ -115,36 +140,36 @@ struct Bracket {
     }
 };
 
-PlasticBending at_level(const ValidSection& section, BendingAxis axis, double t) {
-    return {t, cut_section(section, axis, t).moment};
+PlasticBending at_level(const ValidSection& section, BendingAxis axis, TensionSide tension, double t) {
+    return {t, cut_section(section, axis, tension, t).moment};
 }
 
 }  // namespace
 
-double yield_force(const ValidSection& section, BendingAxis axis, double t, Side side) {
-    const SectionCut cut = cut_section(section, axis, t);
+double yield_force(const ValidSection& section, BendingAxis axis, TensionSide tension, double t, Side side) {
+    const SectionCut cut = cut_section(section, axis, tension, t);
     return side == Side::Below ? cut.force_below : cut.force_above;
 }
 
-PlasticBending plastic_bending(const ValidSection& section, BendingAxis axis) {
-    const std::vector<PartSummary> parts = summarize_parts(section, axis);
-    double lo = parts[0].lo, hi = parts[0].hi, total = 0.0, force_moment = 0.0;
+PlasticBending plastic_bending(const ValidSection& section, BendingAxis axis, TensionSide tension) {
+    const std::vector<PartSummary> parts = summarize_parts(section, axis, tension);
+    double lo = parts[0].lo, hi = parts[0].hi, weight = 0.0, weight_moment = 0.0;
     for (const PartSummary& part : parts) {
         lo = std::min(lo, part.lo), hi = std::max(hi, part.hi);
-        total += part.force, force_moment += part.force_moment;
+        weight += part.weight, weight_moment += part.weight_moment;
     }
-    if (const std::optional<double> gap = middle_of_balanced_gap(parts, total)) return at_level(section, axis, *gap);
+    if (const std::optional<double> gap = middle_of_balanced_gap(parts)) return at_level(section, axis, tension, *gap);
 
-    double t = force_moment / total;  // force-weighted centroid: exact for doubly symmetric sections
+    double t = weight_moment / weight;  // strength-weighted centroid: exact for doubly symmetric sections with fc = fy
     Bracket bracket{lo, hi, hi - lo, 0};
     for (;;) {
         if (!(t > bracket.lo && t < bracket.hi)) {
             t = 0.5 * (bracket.lo + bracket.hi);
             // The bracket has closed on a vertex level: the root is there, up to round-off.
-            if (!(t > bracket.lo && t < bracket.hi)) return at_level(section, axis, t);
+            if (!(t > bracket.lo && t < bracket.hi)) return at_level(section, axis, tension, t);
         }
-        SectionCut cut = cut_section(section, axis, t);
-        if (cut.a == t) rates_from_piece_ends(section, axis, cut);
+        SectionCut cut = cut_section(section, axis, tension, t);
+        if (cut.a == t) rates_from_piece_ends(section, axis, tension, cut);
         const double w = cut.rate, k = cut.rate_slope;
         // Half the force imbalance: F(s) − N/2 = 0 at the root, F(t) − N/2 = −deficit.
         const double deficit = 0.5 * (cut.force_above - cut.force_below);

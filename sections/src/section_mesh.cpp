@@ -174,7 +174,7 @@ SectionMesh mesh_section(const ValidSection& section, const MeshOptions& options
     SectionMesh mesh;
     for (std::size_t p = 0; p < section.parts().size(); ++p) {
         PartTriangulation triangulation(
-            detail::plan_mesh_cuts(section.parts()[p], options.z_cut, options.x_cut, options.vertex));
+            detail::plan_mesh_cuts(section.parts()[p], options.z_cuts, options.x_cuts, options.vertex));
         if (!triangulation.mark_and_refine(options, ring_area(section.parts()[p].outer))) mesh.refinement_stopped = true;
         triangulation.append_to(mesh, p);
     }

@@ -181,23 +181,6 @@ std::size_t ValidSection::vertex_count() const {
     return n;
 }
 
-namespace {
-
-// The capacity routes use one strength for tension and compression so far; a material whose
-// strengths differ (concrete, timber) would give silently wrong numbers, so it is refused until
-// the routes compute both signs (N_neg, Mx_neg, Mz_neg).
-void require_equal_strengths(const Material& material, const std::string& where) {
-    if (material.compression_strength() == material.fy) return;
-    std::ostringstream message;
-    message.precision(17);
-    message << where << (material.name.empty() ? "" : " \"" + material.name + "\"") << ": tension fy = " << material.fy
-            << " Pa and compression fc = " << material.compression_strength()
-            << " Pa differ; capacities for such materials are not available yet (only fc = fy)";
-    throw InputError(message.str());
-}
-
-}  // namespace
-
 ValidSection validate_section(const Section& section) {
     if (section.parts.empty()) throw InputError("section: has no parts; give at least one part with an outer ring");
     ValidSection valid;
@@ -205,7 +188,6 @@ ValidSection validate_section(const Section& section) {
     for (std::size_t p = 0; p < section.parts.size(); ++p) {
         const Part& given = section.parts[p];
         validate_material(given.material, "part " + std::to_string(p) + ", material");
-        require_equal_strengths(given.material, "part " + std::to_string(p) + ", material");
         Part part{checked_ring(given.outer, {p, -1}), {}, given.material};
         for (std::size_t h = 0; h < given.holes.size(); ++h)
             part.holes.push_back(checked_ring(given.holes[h], {p, static_cast<int>(h)}));

@@ -20,7 +20,18 @@ constexpr Row kRows[] = {
     {Capacity::Mx, "bending about x (eq. 2.12)", "N·m"},
     {Capacity::Mz, "bending about z (eq. 2.13)", "N·m"},
     {Capacity::My, "torsion about y (eq. 2.14)", "N·m"},
+    {Capacity::N_neg, "axial force, compression (fc)", "N"},
+    {Capacity::Mx_neg, "bending about x, tension above its axis", "N·m"},
+    {Capacity::Mz_neg, "bending about z, tension at smaller x", "N·m"},
 };
+
+// The counterpart of a _neg capacity: with fc = fy the two are equal and the table shows one.
+std::optional<Capacity> counterpart(Capacity c) {
+    if (c == Capacity::N_neg) return Capacity::N;
+    if (c == Capacity::Mx_neg) return Capacity::Mx;
+    if (c == Capacity::Mz_neg) return Capacity::Mz;
+    return std::nullopt;
+}
 
 std::string format(const char* pattern, double a) {
     char buffer[64];
@@ -69,6 +80,10 @@ std::string capacity_table(const Capacities& c, const ReportContext& context) {
         << "centroid    " << format("x = %.10g m, z = %.10g m", c.centroid.x, c.centroid.z) << "\n";
     if (c.z_pna) out << "Mx axis     " << format("z = %.10g m (plastic neutral axis, equal force)", *c.z_pna) << "\n";
     if (c.x_pna) out << "Mz axis     " << format("x = %.10g m (plastic neutral axis, equal force)", *c.x_pna) << "\n";
+    if (c.z_pna_neg && c.z_pna_neg != c.z_pna)
+        out << "Mx_neg axis " << format("z = %.10g m (equal force, tension above)", *c.z_pna_neg) << "\n";
+    if (c.x_pna_neg && c.x_pna_neg != c.x_pna)
+        out << "Mz_neg axis " << format("x = %.10g m (equal force, tension at smaller x)", *c.x_pna_neg) << "\n";
     if (c.reference) out << "joint point " << format("x = %.10g m, z = %.10g m (My)", c.reference->x, c.reference->z) << "\n";
     if (context.cubature)
         out << "mesh        " << context.cubature->triangles << " triangles, " << context.cubature->evaluations
@@ -80,6 +95,8 @@ std::string capacity_table(const Capacities& c, const ReportContext& context) {
     for (const Row& row : kRows) {
         const std::optional<double> value = c.get(row.capacity);
         if (!value) continue;
+        const std::optional<Capacity> twin = counterpart(row.capacity);
+        if (twin && c.get(*twin) == value) continue;  // fc = fy: the same number again
         char line[200];
         const std::string error = context.cubature ? format("± %-16.2e ", *context.cubature->estimated_error(row.capacity)) : "";
         std::snprintf(line, sizeof line, "  %-8s  %-17.10g  %s%s  %s\n", to_string(row.capacity).c_str(), *value,
@@ -97,6 +114,8 @@ std::string capacity_json(const Capacities& c, const ReportContext& context) {
     out["centroid"] = {c.centroid.x, c.centroid.z};
     if (c.z_pna) out["z_pna"] = *c.z_pna;
     if (c.x_pna) out["x_pna"] = *c.x_pna;
+    if (c.z_pna_neg) out["z_pna_neg"] = *c.z_pna_neg;
+    if (c.x_pna_neg) out["x_pna_neg"] = *c.x_pna_neg;
     if (c.reference) out["reference"] = {c.reference->x, c.reference->z};
     out["shear"] = to_string(c.shear);
     out["method"] = context.method;

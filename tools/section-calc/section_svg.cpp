@@ -109,8 +109,10 @@ std::size_t draw_mesh(std::ostream& svg, const ValidSection& section, const Capa
                       const Canvas& canvas) {
     MeshOptions options;
     options.max_area = max_area;
-    if (c.z_pna) options.z_cut = *c.z_pna - section.local_origin().z;
-    if (c.x_pna) options.x_cut = *c.x_pna - section.local_origin().x;
+    for (const std::optional<double>& z : {c.z_pna, c.z_pna_neg})
+        if (z) options.z_cuts.push_back(*z - section.local_origin().z);
+    for (const std::optional<double>& x : {c.x_pna, c.x_pna_neg})
+        if (x) options.x_cuts.push_back(*x - section.local_origin().x);
     if (c.reference) options.vertex = section.to_local(*c.reference);
     const SectionMesh mesh = mesh_section(section, options);
     if (mesh.triangles.size() > kMostTriangles) return mesh.triangles.size();

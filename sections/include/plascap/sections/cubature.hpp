@@ -35,7 +35,7 @@ void validate_cubature_options(const CubatureOptions& options);
 
 struct CubatureResult {
     Capacities capacities;                        // the capacities asked for, as compute_capacities()
-    std::array<std::optional<double>, 6> error;   // estimated absolute error, by Capacity [N or N·m]
+    std::array<std::optional<double>, kCapacityCount> error;  // estimated absolute error, by Capacity [N or N·m]
     std::size_t triangles = 0;                    // in the mesh that was integrated
     std::size_t evaluations = 0;                  // integrand evaluations
     double seconds = 0.0;                         // wall time of the whole route, meshing included

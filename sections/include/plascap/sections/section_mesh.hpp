@@ -3,7 +3,8 @@
 // (implemented in section_mesh.cpp, the only file that includes CGAL's meshing headers).
 //
 // The mesh can be made to conform to the kinks of the capacity integrands: the lines z = z_cut and
-// x = x_cut (the plastic neutral axes, where |z − z_pna| and |x − x_pna| bend) become mesh edges,
+// x = x_cut (the plastic neutral axes, where |z − z_pna| and |x − x_pna| bend; two of each when
+// tension and compression strengths differ) become mesh edges,
 // and the joint point (where |p − c| has its cone tip) becomes a mesh vertex. Then every integrand
 // is smooth inside every triangle and Gaussian cubature converges at its full rate.
 #include <array>
@@ -24,8 +25,8 @@ struct MeshOptions {
     // max_area. Off, the mesh is the constrained Delaunay triangulation of the rings and cuts.
     bool refine_shape = false;
     // Kinks to conform to, in the section's local coordinates (ValidSection::to_local).
-    std::optional<double> z_cut;    // the line z = z_cut becomes mesh edges
-    std::optional<double> x_cut;    // the line x = x_cut becomes mesh edges
+    std::vector<double> z_cuts;     // each line z = z_cut becomes mesh edges
+    std::vector<double> x_cuts;     // each line x = x_cut becomes mesh edges
     std::optional<Point> vertex;    // becomes a mesh vertex when it lies in or on a part
 };
 
