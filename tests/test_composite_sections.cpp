@@ -8,6 +8,7 @@
 
 #include "plascap/materials/catalogue.hpp"
 #include "plascap/sections/cubature.hpp"
+#include "plascap/sections/section_json.hpp"
 #include "test_support.hpp"
 
 using namespace plascap;
@@ -135,4 +136,34 @@ TEST(CompositeSections, RoutesAgreeWithDifferentStrengths) {
         ++tested;
     }
     EXPECT_EQ(tested, 30);
+}
+
+// A C25/30 beam 300 × 500 mm with three 314 mm² B500B bars 50 mm above the bottom (rc-beam.json).
+// Sagging: bars 3·314e-6·500 MPa = 471 kN against a concrete block x = 471 kN/(25 MPa·0.3 m) deep,
+// Mx = 471 kN·(0.45 m − x/2). Hogging: concrete has no tension, so the axis sits on the bars, which
+// carry what the concrete below them (0.3 × 0.05 m at 25 MPa = 375 kN) needs: Mx_neg = 375 kN·0.025 m.
+// The bars displace concrete: N_neg = 25 MPa·(0.15 m² − 3·314e-6) + 471 kN.
+TEST(CompositeSections, ReinforcedConcreteBeamWithBars) {
+    const ValidSection s = validate_section(read_section_file(std::string(PLASCAP_SOURCE_DIR) + "/sections/examples/rc-beam.json"));
+    const double steel = 3 * 314e-6, tension = steel * 500e6, x = tension / (25e6 * 0.3);
+    expect_both_routes(s, Capacity::Mx, tension * (0.45 - x / 2));
+    expect_both_routes(s, Capacity::Mx_neg, 25e6 * 0.3 * 0.05 * 0.025);
+    expect_both_routes(s, Capacity::N, tension);
+    expect_both_routes(s, Capacity::N_neg, 25e6 * (0.15 - steel) + tension);
+    const Capacities c = compute_capacities(s);
+    EXPECT_NEAR(*c.z_pna, 0.25 - x, 1e-15);
+    EXPECT_EQ(*c.z_pna_neg, -0.2);  // on the bars' level: the force steps there
+}
+
+// The paper's column (Section 3; ../shared/reference/values.md): 1 m² of concrete with 0.04 % steel
+// of fy = 200 MPa carries 80 kN in tension; at dt = 1/60 s a joint row may pass 80 kN/60 = 1333 N·s
+// per step (the paper rounds to 1330).
+TEST(CompositeSections, PaperColumn) {
+    const ValidSection s = validate_section(read_section_file(std::string(PLASCAP_SOURCE_DIR) + "/sections/examples/paper-column.json"));
+    expect_both_routes(s, Capacity::N, 80e3);
+    const double impulse = *compute_capacities(s).N / 60.0;
+    EXPECT_NEAR(impulse, 1333.3333, 1e-3);
+    EXPECT_NEAR(impulse, 1330.0, 0.003 * 1330.0);
+    EXPECT_EQ(s.parts()[0].material.name, "C25/30 + 0.04 % paper-steel");
+    EXPECT_EQ(*s.parts()[0].material.density, 0.9996 * 2400 + 0.0004 * 7800);
 }

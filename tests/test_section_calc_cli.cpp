@@ -260,6 +260,12 @@ TEST(SectionCalc, BadInputFiles) {
         {"parts-overlapping.json", "part 1: overlaps part 0"},
         {"negative-yield-stress.json", "material: yield stress fy must be a finite number >= 0 in Pa (got -200000000)"},
         {"zero-yield-stress.json", "parts[0].material: the material has no strength: fy and fc are both 0"},
+        {"bar-outside-part.json", "part 0, bar 0: its centre (0.4, 0.05) m lies outside its part"},
+        {"bar-across-edge.json", "part 0, bar 0: the bar (radius 0.009997464892 m for its area) crosses its part's edge"},
+        {"bars-overlap.json", "part 0, bar 1: overlaps bar 0 (centres 0.01 m apart"},
+        {"bar-negative-area.json", "part 0, bar 0: its area must be a positive finite number up to its part's area"},
+        {"reinforcement-ratio-out-of-range.json", "parts[0].reinforcement.ratio: must be between 0 and 1"},
+        {"unknown-bar-material.json", "parts[0].bars[0].material: unknown material \"B550\" (did you mean B500B?)"},
         {"unknown-shear.json", "shear: unknown shear criterion 'rankine'"},
     };
     for (const auto& c : cases) {

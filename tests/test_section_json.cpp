@@ -82,7 +82,7 @@ TEST(SectionJson, MissingPiecesAreNamed) {
 
 TEST(SectionJson, UnknownKeysAreRefused) {
     EXPECT_EQ(refusal(R"({"material": {"fy": 1e8}, "parts": [{"outer": [[0, 0], [1, 0], [1, 1]], "hole": []}]})"),
-              R"(parts[0]: unknown key "hole" (known keys: outer, holes, material, name))");
+              R"(parts[0]: unknown key "hole" (known keys: outer, holes, material, bars, reinforcement, name))");
     EXPECT_EQ(refusal(R"({"sheer": "tresca", "parts": []})"),
               R"(section: unknown key "sheer" (known keys: shear, reference, material, parts, name, description))");
 }

@@ -1,5 +1,9 @@
 #include "plascap/sections/capacities.hpp"
 
+#include <cmath>
+
+#include "bar_strength.hpp"
+
 #include "plascap/sections/plastic_bending.hpp"
 #include "plascap/sections/ring_integrals.hpp"
 
@@ -23,6 +27,12 @@ PartTotals sum_parts(const ValidSection& section) {
         totals.moments.area += m.area;
         totals.moments.Sx += m.Sx;
         totals.moments.Sz += m.Sz;
+        for (const Bar& bar : part.bars) {  // bars displace the part's material
+            const detail::BarStrength s = detail::bar_strength(bar, part.material, section.shear());
+            totals.force += s.tension * bar.area;
+            totals.compression += s.compression * bar.area;
+            totals.shear_force += s.shear * bar.area;
+        }
     }
     return totals;
 }
@@ -34,14 +44,20 @@ double torsion_capacity(const ValidSection& section, Point c) {
         double integral = distance_integral(part.outer, c);
         for (const Ring& hole : part.holes) integral += distance_integral(hole, c);
         moment += shear_yield_stress(part.material.fy, section.shear()) * integral;
+        for (const Bar& bar : part.bars)
+            moment += detail::bar_strength(bar, part.material, section.shear()).shear * bar.area *
+                      std::hypot(bar.at.x - c.x, bar.at.z - c.z);
     }
     return moment;
 }
 
 // True when every part has fc = fy: then each _neg capacity equals its counterpart.
 bool same_strength_both_ways(const ValidSection& section) {
-    for (const Part& part : section.parts())
+    for (const Part& part : section.parts()) {
         if (part.material.compression_strength() != part.material.fy) return false;
+        for (const Bar& bar : part.bars)
+            if (bar.material.compression_strength() != bar.material.fy) return false;
+    }
     return true;
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "bar_strength.hpp"
 #include "mesh_neutral_axis.hpp"
 #include "plascap/sections/plastic_bending.hpp"
 #include "plascap/input_error.hpp"
@@ -155,19 +156,41 @@ struct Bending {
     Capacity capacity;
     BendingAxis axis;
     std::vector<detail::SideStrengths> strength;  // by part
+    std::vector<detail::PointArea> bars;          // with their net strengths
     double level = 0.0;                           // local coordinates
     std::optional<std::size_t> copy_of;
     Sum sum;
 };
 
+detail::SideStrengths sides(double fy, double fc, BendingAxis axis, bool negative) {
+    return tension_side(axis, negative) == TensionSide::Below ? detail::SideStrengths{fy, fc} : detail::SideStrengths{fc, fy};
+}
+
 std::vector<detail::SideStrengths> side_strengths(const ValidSection& section, BendingAxis axis, bool negative) {
     std::vector<detail::SideStrengths> strengths;
-    for (const Part& part : section.parts()) {
-        const double fy = part.material.fy, fc = part.material.compression_strength();
-        const bool tension_below = tension_side(axis, negative) == TensionSide::Below;
-        strengths.push_back(tension_below ? detail::SideStrengths{fy, fc} : detail::SideStrengths{fc, fy});
-    }
+    for (const Part& part : section.parts())
+        strengths.push_back(sides(part.material.fy, part.material.compression_strength(), axis, negative));
     return strengths;
+}
+
+std::vector<detail::PointArea> bar_areas(const ValidSection& section, BendingAxis axis, bool negative) {
+    std::vector<detail::PointArea> bars;
+    for (const Part& part : section.parts())
+        for (const Bar& bar : part.bars) {
+            const detail::BarStrength net = detail::bar_strength(bar, part.material, section.shear());
+            bars.push_back({bar.at, bar.area, sides(net.tension, net.compression, axis, negative)});
+        }
+    return bars;
+}
+
+// The bars' exact point terms of one bending capacity: s·A·|level − t|.
+double bar_moment(const std::vector<detail::PointArea>& bars, BendingAxis axis, double t) {
+    double moment = 0.0;
+    for (const detail::PointArea& bar : bars) {
+        const double d = level_of(bar.at, axis) - t;
+        moment += (d < 0.0 ? -bar.strength.below * d : bar.strength.above * d) * bar.area;
+    }
+    return moment;
 }
 
 std::vector<Bending> wanted_bendings(const ValidSection& section, CapacitySet wanted) {
@@ -185,7 +208,8 @@ std::vector<Bending> wanted_bendings(const ValidSection& section, CapacitySet wa
     std::vector<Bending> bendings;
     for (const Kind& k : kinds) {
         if (!wanted.contains(k.capacity)) continue;
-        Bending b{k.capacity, k.axis, side_strengths(section, k.axis, k.negative), 0.0, std::nullopt, Sum()};
+        Bending b{k.capacity, k.axis, side_strengths(section, k.axis, k.negative),
+                  bar_areas(section, k.axis, k.negative), 0.0, std::nullopt, Sum()};
         for (std::size_t i = 0; i < bendings.size(); ++i)
             if (symmetric && bendings[i].capacity == k.twin) b.copy_of = i;
         bendings.push_back(std::move(b));
@@ -245,7 +269,8 @@ CubatureResult cubature_capacities(const ValidSection& section, CapacitySet want
     mesh_options.refine_shape = options.rule == CubatureRule::Fixed;
     std::vector<Bending> bendings = wanted_bendings(section, wanted);
     for (Bending& b : bendings) {
-        b.level = detail::mesh_neutral_axis(plain, b.strength, b.axis);
+        b.level = detail::mesh_neutral_axis(plain, b.strength, b.bars, b.axis);
+        b.sum.add(1.0, {bar_moment(b.bars, b.axis, b.level), 0.0});
         if (options.conforming) (b.axis == BendingAxis::X ? mesh_options.z_cuts : mesh_options.x_cuts).push_back(b.level);
     }
     const Point joint = section.reference() ? section.to_local(*section.reference()) : geometry.centroid;
@@ -283,6 +308,14 @@ CubatureResult cubature_capacities(const ValidSection& section, CapacitySet want
         }
         if (wanted.contains(Capacity::My)) my.add(tau, rule.integrate(triangle, from_joint));  // eq. 2.14
     }
+    for (const Part& part : section.parts())  // bars: exact point terms, displacing the part's material
+        for (const Bar& bar : part.bars) {
+            const detail::BarStrength net = detail::bar_strength(bar, part.material, section.shear());
+            force.add(net.tension, {bar.area, 0.0});
+            compression.add(net.compression, {bar.area, 0.0});
+            shear.add(net.shear, {bar.area, 0.0});
+            my.add(net.shear, {bar.area * from_joint(bar.at), 0.0});
+        }
 
     const auto store = [&](Capacity c, std::optional<double>& slot, const Sum& sum) {
         if (!wanted.contains(c)) return;

@@ -30,8 +30,14 @@ double area_above(const LevelTriangle& t, double level) {
     return t.area - t.area * (level - l0) * (level - l0) / ((l2 - l0) * (l1 - l0));
 }
 
+struct LevelBar {
+    double level, area;
+    SideStrengths strength;
+};
+
 struct Balance {
     std::vector<LevelTriangle> triangles;
+    std::vector<LevelBar> bars;
     // Σ s_above·A_above − s_below·A_below: positive below the axis, negative above it.
     double operator()(double level) const {
         double sum = 0.0;
@@ -39,13 +45,15 @@ struct Balance {
             const double above = area_above(t, level);
             sum += t.strength.above * above - t.strength.below * (t.area - above);
         }
+        for (const LevelBar& b : bars) sum += b.level > level ? b.strength.above * b.area : -b.strength.below * b.area;
         return sum;
     }
 };
 
 double balance_at(double level, void* balance) { return (*static_cast<const Balance*>(balance))(level); }
 
-Balance make_balance(const SectionMesh& mesh, const std::vector<SideStrengths>& strength_of_part, BendingAxis axis) {
+Balance make_balance(const SectionMesh& mesh, const std::vector<SideStrengths>& strength_of_part,
+                     const std::vector<PointArea>& bars, BendingAxis axis) {
     Balance balance;
     balance.triangles.reserve(mesh.triangles.size());
     for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
@@ -58,6 +66,7 @@ Balance make_balance(const SectionMesh& mesh, const std::vector<SideStrengths>& 
         t.strength = strength_of_part[mesh.part_of[i]];
         balance.triangles.push_back(t);
     }
+    for (const PointArea& bar : bars) balance.bars.push_back({level_of(bar.at, axis), bar.area, bar.strength});
     return balance;
 }
 
@@ -74,9 +83,10 @@ double middle_of_gap(const Balance& balance, double t) {
 
 }  // namespace
 
-double mesh_neutral_axis(const SectionMesh& mesh, const std::vector<SideStrengths>& strength_of_part, BendingAxis axis) {
+double mesh_neutral_axis(const SectionMesh& mesh, const std::vector<SideStrengths>& strength_of_part,
+                         const std::vector<PointArea>& bars, BendingAxis axis) {
     const GslErrorsReturned errors_returned;
-    const Balance balance = make_balance(mesh, strength_of_part, axis);
+    const Balance balance = make_balance(mesh, strength_of_part, bars, axis);
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (const LevelTriangle& t : balance.triangles) {
         lo = std::min(lo, t.level[0]);

@@ -44,8 +44,34 @@ struct SectionCut {
     double b = std::numeric_limits<double>::infinity();   // smallest vertex level > t
 };
 
+// A bar's net strengths (its own minus the part's it displaces) on either side of the axis.
+Strengths bar_strengths(const Bar& bar, const Material& part, TensionSide tension) {
+    const Strengths own = strengths_of(bar.material, tension), displaced = strengths_of(part, tension);
+    return {own.below - displaced.below, own.above - displaced.above};
+}
+
+// Bars are point areas: a step in the force at their level (a piece end, like a vertex level), and
+// a moment s·A·|level − t|. A bar exactly at t counts below, as vertex levels do.
+void add_bars(const ValidSection& section, BendingAxis axis, TensionSide tension, double t, SectionCut& s) {
+    for (const Part& part : section.parts())
+        for (const Bar& bar : part.bars) {
+            const Strengths strength = bar_strengths(bar, part.material, tension);
+            const double level = level_of(bar.at, axis);
+            if (level <= t) {
+                s.force_below += strength.below * bar.area;
+                s.moment += strength.below * bar.area * (t - level);
+                s.a = std::max(s.a, level);
+            } else {
+                s.force_above += strength.above * bar.area;
+                s.moment += strength.above * bar.area * (level - t);
+                s.b = std::min(s.b, level);
+            }
+        }
+}
+
 SectionCut cut_section(const ValidSection& section, BendingAxis axis, TensionSide tension, double t) {
     SectionCut s;
+    add_bars(section, axis, tension, t, s);
     for_each_ring(section, tension, [&](const Ring& ring, Strengths strength) {
         const LevelCut c = cut_at(ring, axis, t);
         s.force_below += strength.below * c.area_below;
@@ -100,6 +126,11 @@ std::vector<PartSummary> summarize_parts(const ValidSection& section, BendingAxi
         const Strengths strength = strengths_of(part.material, tension);
         s.force_if_below = strength.below * m.area;
         s.force_if_above = strength.above * m.area;
+        for (const Bar& bar : part.bars) {
+            const Strengths net = bar_strengths(bar, part.material, tension);
+            s.force_if_below += net.below * bar.area;
+            s.force_if_above += net.above * bar.area;
+        }
         s.weight = strength.mean() * m.area;
         s.weight_moment = strength.mean() * (axis == BendingAxis::X ? m.Sz : m.Sx);
         parts.push_back(s);

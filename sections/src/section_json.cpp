@@ -8,6 +8,7 @@
 
 #include "plascap/input_error.hpp"
 #include "plascap/materials/material_json.hpp"
+#include "plascap/materials/mixture.hpp"
 
 namespace plascap {
 namespace {
@@ -57,10 +58,32 @@ Material read_material(const json& value, const std::string& where, const Materi
     return parse_material_json(value.dump(), where);
 }
 
+// {"at": [x, z], "area": m², "material": name or object}
+Bar read_bar(const json& value, const std::string& where, const MaterialCatalogue& catalogue) {
+    if (!value.is_object()) fail(where, "expected a bar {\"at\": [x, z], \"area\": m², \"material\": ...}, got " + type_name(value));
+    reject_unknown_keys(value, where, {"at", "area", "material"});
+    for (const char* key : {"at", "area", "material"})
+        if (!value.contains(key)) fail(where, std::string("the bar has no \"") + key + "\"");
+    return Bar{read_point(value["at"], where + ".at"), read_number(value["area"], where + ".area"),
+               read_material(value["material"], where + ".material", catalogue)};
+}
+
+// The paper's shortcut, {"ratio": ρ, "material": ...}: reinforcement spread evenly over the part.
+Material read_reinforcement(const json& value, const std::string& where, const Material& matrix,
+                            const MaterialCatalogue& catalogue) {
+    if (!value.is_object()) fail(where, "expected {\"ratio\": 0.0004, \"material\": \"B500B\"}, got " + type_name(value));
+    reject_unknown_keys(value, where, {"ratio", "material"});
+    for (const char* key : {"ratio", "material"})
+        if (!value.contains(key)) fail(where, std::string("the reinforcement has no \"") + key + "\"");
+    const double ratio = read_number(value["ratio"], where + ".ratio");
+    if (!(ratio > 0.0 && ratio < 1.0)) fail(where + ".ratio", "must be between 0 and 1 (exclusive): the steel's share of the area");
+    return smeared_mixture(matrix, read_material(value["material"], where + ".material", catalogue), ratio);
+}
+
 Part read_part(const json& value, const std::string& where, const std::optional<Material>& default_material,
                const MaterialCatalogue& catalogue) {
     if (!value.is_object()) fail(where, "expected a part object {\"outer\": [...], \"holes\": [...]}, got " + type_name(value));
-    reject_unknown_keys(value, where, {"outer", "holes", "material", "name"});
+    reject_unknown_keys(value, where, {"outer", "holes", "material", "bars", "reinforcement", "name"});
     if (!value.contains("outer")) fail(where, "the part has no \"outer\" ring");
     Part part;
     part.outer = read_ring(value["outer"], where + ".outer");
@@ -77,6 +100,14 @@ Part read_part(const json& value, const std::string& where, const std::optional<
     } else {
         fail(where, "no material: give the part a \"material\" or the section a default \"material\"");
     }
+    if (value.contains("bars")) {
+        const json& bars = value["bars"];
+        if (!bars.is_array()) fail(where + ".bars", "expected an array of bars, got " + type_name(bars));
+        for (std::size_t b = 0; b < bars.size(); ++b)
+            part.bars.push_back(read_bar(bars[b], where + ".bars[" + std::to_string(b) + "]", catalogue));
+    }
+    if (value.contains("reinforcement"))
+        part.material = read_reinforcement(value["reinforcement"], where + ".reinforcement", part.material, catalogue);
     return part;
 }
 

@@ -6,6 +6,7 @@
 #include "plascap/input_error.hpp"
 #include "plascap/sections/ring_integrals.hpp"
 #include "plascap/sections/valid_section.hpp"
+#include "bar_checks.hpp"
 #include "topology_checks.hpp"
 
 namespace plascap {
@@ -188,10 +189,11 @@ ValidSection validate_section(const Section& section) {
     for (std::size_t p = 0; p < section.parts.size(); ++p) {
         const Part& given = section.parts[p];
         validate_material(given.material, "part " + std::to_string(p) + ", material");
-        Part part{checked_ring(given.outer, {p, -1}), {}, given.material};
+        Part part{checked_ring(given.outer, {p, -1}), {}, given.material, given.bars};
         for (std::size_t h = 0; h < given.holes.size(); ++h)
             part.holes.push_back(checked_ring(given.holes[h], {p, static_cast<int>(h)}));
         check_holes(part, p);  // before orienting, so that messages count vertices as given
+        detail::check_bars(part, p);
         orient(part.outer, true);
         for (Ring& hole : part.holes) orient(hole, false);
         valid.parts_.push_back(std::move(part));
@@ -219,6 +221,7 @@ ValidSection validate_section(const Section& section) {
         for (Point& q : part.outer) q = valid.to_local(q);
         for (Ring& hole : part.holes)
             for (Point& q : hole) q = valid.to_local(q);
+        for (Bar& bar : part.bars) bar.at = valid.to_local(bar.at);
     }
     return valid;
 }

@@ -17,11 +17,20 @@ struct Point {
 // A closed polygon, either orientation; a closing vertex equal to the first is allowed.
 using Ring = std::vector<Point>;
 
-// One connected piece of material: an outer ring with holes strictly inside it.
+// A reinforcement bar as a point area (reinforced concrete): its area is taken out of the part's
+// material and carried by its own.
+struct Bar {
+    Point at;           // centre [m]
+    double area = 0.0;  // cross-section area [m²]
+    Material material;
+};
+
+// One connected piece of material: an outer ring with holes strictly inside it, and bars.
 struct Part {
     Ring outer;
     std::vector<Ring> holes;
     Material material;
+    std::vector<Bar> bars = {};
 };
 
 struct Section {
