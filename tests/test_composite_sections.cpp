@@ -167,3 +167,46 @@ TEST(CompositeSections, PaperColumn) {
     EXPECT_EQ(s.parts()[0].material.name, "C25/30 + 0.04 % paper-steel");
     EXPECT_EQ(*s.parts()[0].material.density, 0.9996 * 2400 + 0.0004 * 7800);
 }
+
+// The shear criterion: the file's if given, else the one all materials name (steels: von Mises,
+// EN 1993-1-1 6.2.6), else Tresca (the paper's).
+TEST(CompositeSections, ShearCriterionFromTheMaterials) {
+    const auto criterion = [](const char* json) { return validate_section(parse_section_json(json)).shear(); };
+    EXPECT_EQ(criterion(R"({"material": "S355", "parts": [{"outer": [[0, 0], [1, 0], [1, 1]]}]})"), ShearCriterion::VonMises);
+    EXPECT_EQ(criterion(R"({"shear": "tresca", "material": "S355", "parts": [{"outer": [[0, 0], [1, 0], [1, 1]]}]})"),
+              ShearCriterion::Tresca);
+    EXPECT_EQ(criterion(R"({"material": "S355", "parts": [{"outer": [[0, 0], [1, 0], [1, 1]]},
+                                                          {"outer": [[2, 0], [3, 0], [3, 1]], "material": "C24"}]})"),
+              ShearCriterion::Tresca);
+    EXPECT_EQ(criterion(R"({"material": {"fy": 1e8}, "parts": [{"outer": [[0, 0], [1, 0], [1, 1]]}]})"), ShearCriterion::Tresca);
+}
+
+// A steel I (S355: flanges 150 × 10, web 10 × 280 mm, depth 300) under a GL24h slab 600 × 100 mm.
+// Either way the slab alone is weaker than the steel, so it works whole (compression fc = 24 MPa
+// sagging, tension ft = 19.2 MPa hogging) and the axis falls into the top flange where the steel
+// balances: 355·(A_below − A_above) = F_slab, A_below + A_above = 5800 mm². Moments from the blocks.
+TEST(CompositeSections, SteelBeamUnderTimberSlab) {
+    const Ring i_beam = {{-75 * mm, 0}, {75 * mm, 0}, {75 * mm, 10 * mm}, {5 * mm, 10 * mm}, {5 * mm, 290 * mm},
+                         {75 * mm, 290 * mm}, {75 * mm, 300 * mm}, {-75 * mm, 300 * mm}, {-75 * mm, 290 * mm},
+                         {-5 * mm, 290 * mm}, {-5 * mm, 10 * mm}, {-75 * mm, 10 * mm}};
+    const ValidSection s = validate_section(section_of(
+        {part_of(i_beam, grade("S355")), part_of(box(-300 * mm, 300 * mm, 300 * mm, 400 * mm), grade("GL24h"))}));
+    const double fs = 355e6, steel = 5800e-6;
+    const auto moment = [&](double slab_strength, double& depth) {
+        const double slab = slab_strength * 0.06;                 // whole slab [N]
+        const double above = 0.5 * (steel - slab / fs);           // steel area above the axis [m²]
+        depth = above / 0.15;                                     // into the top flange
+        const double d = depth, rest = 10 * mm - d;
+        return slab * (d + 50 * mm) + fs * (0.15 * d * d / 2 + 0.15 * rest * rest / 2 + 2800e-6 * (rest + 140 * mm) +
+                                            1500e-6 * (rest + 285 * mm));
+    };
+    double sag_depth = 0.0, hog_depth = 0.0;
+    const double mx = moment(24e6, sag_depth), mx_neg = moment(19.2e6, hog_depth);
+    ASSERT_LT(sag_depth, 10 * mm);  // the premise: the axis is in the flange
+    ASSERT_LT(hog_depth, 10 * mm);
+    const Capacities c = compute_capacities(s);
+    EXPECT_NEAR(*c.z_pna, 300 * mm - sag_depth, 1e-15);
+    EXPECT_NEAR(*c.z_pna_neg, 300 * mm - hog_depth, 1e-15);
+    expect_both_routes(s, Capacity::Mx, mx);
+    expect_both_routes(s, Capacity::Mx_neg, mx_neg);
+}

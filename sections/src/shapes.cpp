@@ -19,7 +19,7 @@ Ring regular_polygon_ring(std::size_t n, double R, double start_angle) {
     return ring;
 }
 
-Section rectangle_section(double b, double h, double fy, ShearCriterion shear) {
+Section rectangle_section(double b, double h, double fy, std::optional<ShearCriterion> shear) {
     Section section;
     section.shear = shear;
     section.parts.push_back({rectangle_ring(b, h), {}, Material{"", fy}});

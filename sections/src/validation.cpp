@@ -171,6 +171,16 @@ void check_parts_apart(const std::vector<Part>& parts) {
     }
 }
 
+// The criterion all parts' materials name (S355: von Mises, EN 1993-1-1 6.2.6), else Tresca.
+ShearCriterion materials_shear_criterion(const Section& section) {
+    std::optional<ShearCriterion> common;
+    for (const Part& part : section.parts) {
+        if (!part.material.shear || (common && *common != *part.material.shear)) return ShearCriterion::Tresca;
+        common = part.material.shear;
+    }
+    return common.value_or(ShearCriterion::Tresca);
+}
+
 }  // namespace
 
 std::size_t ValidSection::vertex_count() const {
@@ -185,7 +195,7 @@ std::size_t ValidSection::vertex_count() const {
 ValidSection validate_section(const Section& section) {
     if (section.parts.empty()) throw InputError("section: has no parts; give at least one part with an outer ring");
     ValidSection valid;
-    valid.shear_ = section.shear;
+    valid.shear_ = section.shear ? *section.shear : materials_shear_criterion(section);
     for (std::size_t p = 0; p < section.parts.size(); ++p) {
         const Part& given = section.parts[p];
         validate_material(given.material, "part " + std::to_string(p) + ", material");

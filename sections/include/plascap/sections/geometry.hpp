@@ -35,7 +35,9 @@ struct Part {
 
 struct Section {
     std::vector<Part> parts;                  // interiors must not overlap (a shared edge is fine)
-    ShearCriterion shear = ShearCriterion::Tresca;
+    // τy = fy/2 or fy/√3 (eq. 2.11). Unset: the criterion every part's material names, when they
+    // all name the same one, else Tresca (the paper's).
+    std::optional<ShearCriterion> shear;
     std::optional<Point> reference;           // joint point for My; default: area centroid
 };
 

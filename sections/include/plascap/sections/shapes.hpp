@@ -1,6 +1,7 @@
 #pragma once
 // Rings of common shapes, centred on the origin, counter-clockwise.
 #include <cstddef>
+#include <optional>
 
 #include "plascap/sections/geometry.hpp"
 
@@ -13,6 +14,7 @@ Ring rectangle_ring(double b, double h);
 Ring regular_polygon_ring(std::size_t n, double R, double start_angle = 0.0);
 
 // The section-calc --rect shortcut: one b x h rectangle part of yield stress fy.
-Section rectangle_section(double b, double h, double fy, ShearCriterion shear = ShearCriterion::Tresca);
+// Unset shear: Tresca (the material has no criterion of its own).
+Section rectangle_section(double b, double h, double fy, std::optional<ShearCriterion> shear = std::nullopt);
 
 }  // namespace plascap
