@@ -154,6 +154,15 @@ TEST(SectionCalc, SvgDrawing) {
     for (const char* needle : {"fill-rule=\"evenodd\"", "Mx axis z = 0 m", "Mz axis x = 0 m", "centroid", "joint point (My)", "<polygon", " mm</text>", "</svg>"})
         EXPECT_NE(text.find(needle), std::string::npos) << needle;
     std::remove(path.c_str());
+
+    // Bars at their size, a legend of the materials, and the hogging axis on the bars.
+    const CliRun beam = section_calc("--svg \"" + path + "\" \"" + example("rc-beam.json") + "\"");
+    ASSERT_EQ(beam.exit_code, 0) << beam.err;
+    std::stringstream drawing;
+    drawing << std::ifstream(path).rdbuf();
+    for (const char* needle : {"<circle cx=", ">C25/30</text>", ">B500B</text>", "Mx_neg axis z = -0.2 m"})
+        EXPECT_NE(drawing.str().find(needle), std::string::npos) << needle;
+    std::remove(path.c_str());
 }
 
 // The catalogue: listed for people and for programs (with every value's source), used by name for

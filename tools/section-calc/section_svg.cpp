@@ -8,8 +8,10 @@
 #include <fstream>
 #include <limits>
 #include <sstream>
+#include <vector>
 
 #include "plascap/input_error.hpp"
+#include "plascap/sections/ring_integrals.hpp"
 #include "plascap/sections/section_mesh.hpp"
 
 namespace plascap::tools {
@@ -63,7 +65,7 @@ public:
     }
     double x(double metres) const { return kMargin + (metres - x_min_) * scale_; }
     double y(double metres) const { return kMargin + (z_max_ - metres) * scale_; }
-    double width() const { return 2 * kMargin + (x_max_ - x_min_) * scale_; }
+    double width() const { return std::max(820.0, 2 * kMargin + (x_max_ - x_min_) * scale_); }
     double height() const { return 2 * kMargin + (z_max_ - z_min_) * scale_ + 60.0; }
     double scale() const { return scale_; }
     double x_min() const { return x_min_; }
@@ -88,11 +90,51 @@ std::string ring_path(const Ring& ring, const ValidSection& section, const Canva
     return d.str();
 }
 
-void draw_parts(std::ostream& svg, const ValidSection& section, const Canvas& canvas) {
+// One fill colour per material name, in order of appearance, and a legend line for each.
+class MaterialColours {
+public:
+    const char* colour(const Material& m) {
+        const std::string key = m.name.empty() ? "unnamed material" : m.name;
+        for (std::size_t i = 0; i < names_.size(); ++i)
+            if (names_[i] == key) return kPalette[i % kPaletteSize];
+        names_.push_back(key);
+        return kPalette[(names_.size() - 1) % kPaletteSize];
+    }
+    const std::vector<std::string>& names() const { return names_; }
+    static const char* at(std::size_t i) { return kPalette[i % kPaletteSize]; }
+
+private:
+    static constexpr std::size_t kPaletteSize = 6;
+    static constexpr const char* kPalette[kPaletteSize] = {"#cfd8e3", "#e8d3a9", "#c9e3c5", "#e3c5d8", "#d6d0ea", "#f0e0b0"};
+    std::vector<std::string> names_;
+};
+
+void draw_parts(std::ostream& svg, const ValidSection& section, const Canvas& canvas, MaterialColours& colours) {
     for (const Part& part : section.parts()) {
         std::string d = ring_path(part.outer, section, canvas);
         for (const Ring& hole : part.holes) d += ring_path(hole, section, canvas);
-        svg << "<path d=\"" << d << "\" fill=\"#cfd8e3\" fill-rule=\"evenodd\" stroke=\"none\"/>\n";
+        svg << "<path d=\"" << d << "\" fill=\"" << colours.colour(part.material) << "\" fill-rule=\"evenodd\" stroke=\"none\"/>\n";
+    }
+}
+
+// Bars at their true size (the circle of their area), at least 2 px across.
+void draw_bars(std::ostream& svg, const ValidSection& section, const Canvas& canvas, MaterialColours& colours) {
+    for (const Part& part : section.parts())
+        for (const Bar& bar : part.bars) {
+            const Point p = section.to_section(bar.at);
+            const double r = std::max(2.0, std::sqrt(bar.area / 3.141592653589793) * canvas.scale());
+            svg << "<circle cx=\"" << canvas.x(p.x) << "\" cy=\"" << canvas.y(p.z) << "\" r=\"" << r << "\" fill=\""
+                << colours.colour(bar.material) << "\" stroke=\"#333\" stroke-width=\"1\"/>\n";
+        }
+}
+
+void draw_legend(std::ostream& svg, const Canvas& canvas, const MaterialColours& colours) {
+    double x = kMargin + 160.0;
+    const double y = canvas.height() - 45.0;
+    for (std::size_t i = 0; i < colours.names().size(); ++i) {
+        svg << "<rect x=\"" << x << "\" y=\"" << y - 11 << "\" width=\"14\" height=\"14\" fill=\"" << MaterialColours::at(i)
+            << "\" stroke=\"#333\"/>\n<text x=\"" << x + 20 << "\" y=\"" << y << "\">" << escaped(colours.names()[i]) << "</text>\n";
+        x += 34.0 + 7.5 * static_cast<double>(colours.names()[i].size());
     }
 }
 
@@ -135,24 +177,37 @@ double tidy(double value, const Canvas& canvas) {
     return std::abs(value) < 1e-12 * size ? 0.0 : value;
 }
 
+// One neutral axis across the drawing: horizontal (z = level) for Mx, vertical (x = level) for Mz.
+void draw_axis(std::ostream& svg, const Canvas& canvas, BendingAxis axis, double level, const char* label,
+               const char* colour, const char* dashes, double label_offset) {
+    char text[320];
+    if (axis == BendingAxis::X) {
+        const double y = canvas.y(level);
+        std::snprintf(text, sizeof text,
+                      "<line x1=\"%g\" y1=\"%g\" x2=\"%g\" y2=\"%g\" stroke=\"%s\" stroke-width=\"1.5\" stroke-dasharray=\"%s\"/>\n"
+                      "<text x=\"%g\" y=\"%g\" fill=\"%s\">%s z = %.6g m</text>\n",
+                      kMargin - 20, y, canvas.x(canvas.x_max()) + 20, y, colour, dashes, kMargin - 20, y - 5 + label_offset,
+                      colour, label, tidy(level, canvas));
+    } else {
+        const double x = canvas.x(level);
+        const bool right_half = x > 0.5 * (canvas.x(canvas.x_min()) + canvas.x(canvas.x_max()));  // label inwards
+        std::snprintf(text, sizeof text,
+                      "<line x1=\"%g\" y1=\"%g\" x2=\"%g\" y2=\"%g\" stroke=\"%s\" stroke-width=\"1.5\" stroke-dasharray=\"%s\"/>\n"
+                      "<text x=\"%g\" y=\"%g\" fill=\"%s\" text-anchor=\"%s\">%s x = %.6g m</text>\n",
+                      x, kMargin - 20, x, canvas.y(canvas.z_min()) + 20, colour, dashes, right_half ? x - 5 : x + 5,
+                      canvas.y(canvas.z_min()) + 34 + label_offset, colour, right_half ? "end" : "start", label,
+                      tidy(level, canvas));
+    }
+    svg << text;
+}
+
 void draw_axes(std::ostream& svg, const Capacities& c, const Canvas& canvas) {
-    char text[256];
-    if (c.z_pna) {
-        const double y = canvas.y(*c.z_pna);
-        std::snprintf(text, sizeof text,
-                      "<line x1=\"%g\" y1=\"%g\" x2=\"%g\" y2=\"%g\" stroke=\"#c0392b\" stroke-width=\"1.5\" "
-                      "stroke-dasharray=\"8,4\"/>\n<text x=\"%g\" y=\"%g\" fill=\"#c0392b\">Mx axis z = %.6g m</text>\n",
-                      kMargin - 20, y, canvas.x(canvas.x_max()) + 20, y, kMargin - 20, y - 5, tidy(*c.z_pna, canvas));
-        svg << text;
-    }
-    if (c.x_pna) {
-        const double x = canvas.x(*c.x_pna);
-        std::snprintf(text, sizeof text,
-                      "<line x1=\"%g\" y1=\"%g\" x2=\"%g\" y2=\"%g\" stroke=\"#2e6fb7\" stroke-width=\"1.5\" "
-                      "stroke-dasharray=\"8,4\"/>\n<text x=\"%g\" y=\"%g\" fill=\"#2e6fb7\">Mz axis x = %.6g m</text>\n",
-                      x, kMargin - 20, x, canvas.y(canvas.z_min()) + 20, x + 5, canvas.y(canvas.z_min()) + 34, tidy(*c.x_pna, canvas));
-        svg << text;
-    }
+    if (c.z_pna) draw_axis(svg, canvas, BendingAxis::X, *c.z_pna, "Mx axis", "#c0392b", "8,4", 0.0);
+    if (c.z_pna_neg && c.z_pna_neg != c.z_pna)
+        draw_axis(svg, canvas, BendingAxis::X, *c.z_pna_neg, "Mx_neg axis", "#c0392b", "2,3", 18.0);
+    if (c.x_pna) draw_axis(svg, canvas, BendingAxis::Z, *c.x_pna, "Mz axis", "#2e6fb7", "8,4", 0.0);
+    if (c.x_pna_neg && c.x_pna_neg != c.x_pna)
+        draw_axis(svg, canvas, BendingAxis::Z, *c.x_pna_neg, "Mz_neg axis", "#2e6fb7", "2,3", 16.0);
 }
 
 void draw_points(std::ostream& svg, const Capacities& c, const Canvas& canvas) {
@@ -187,7 +242,7 @@ void draw_scale_and_title(std::ostream& svg, const Canvas& canvas, const std::st
                                                         : std::to_string(triangles) + " triangles";
     svg << "<text x=\"" << kMargin << "\" y=\"24\" font-weight=\"bold\">" << escaped(title) << "</text>\n"
         << "<text x=\"" << kMargin << "\" y=\"42\" fill=\"#555\">mesh: " << mesh
-        << "; red: Mx neutral axis, blue: Mz neutral axis</text>\n";
+        << "; red: Mx neutral axis, blue: Mz neutral axis (dotted: the _neg axes where they differ)</text>\n";
 }
 
 }  // namespace
@@ -198,9 +253,12 @@ void write_section_svg(const std::string& path, const ValidSection& section, con
     std::ostringstream svg;
     svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << canvas.width() << "\" height=\"" << canvas.height()
         << "\" font-family=\"sans-serif\" font-size=\"13\">\n<rect width=\"100%\" height=\"100%\" fill=\"#fff\"/>\n";
-    draw_parts(svg, section, canvas);
+    MaterialColours colours;
+    draw_parts(svg, section, canvas, colours);
     const std::size_t triangles = draw_mesh(svg, section, capacities, max_area, canvas);
     draw_outlines(svg, section, canvas);
+    draw_bars(svg, section, canvas, colours);
+    draw_legend(svg, canvas, colours);
     draw_axes(svg, capacities, canvas);
     draw_points(svg, capacities, canvas);
     draw_scale_and_title(svg, canvas, title, triangles);
