@@ -208,8 +208,8 @@ TEST(SectionCalc, HelpListsEveryOption) {
 // Bad command lines: exit 2, one line on stderr, nothing on stdout.
 TEST(SectionCalc, BadCommandLines) {
     const struct {
-        const char* arguments;
-        const char* message;
+        std::string arguments;
+        std::string message;
     } cases[] = {
         {"", "section-calc: error: no section: give FILE or --rect B H --fy FY (see --help)\n"},
         {"--rect 0.1 0.1", "section-calc: error: --rect needs --fy FY, the yield stress in Pa, or --material NAME\n"},
@@ -221,6 +221,8 @@ TEST(SectionCalc, BadCommandLines) {
         {"--rect 0.1 0.1 --material S335", "section-calc: error: --material: unknown material \"S335\" (did you mean S235, S355, S275?)\n"},
         {"--rect 0.1 0.1 --fy 1e8 --material S355", "section-calc: error: give --fy or --material, not both\n"},
         {"--materials /nonexistent/m.json --list-materials", "section-calc: error: /nonexistent/m.json: cannot open the materials file\n"},
+        {"--materials " + kSource + "/tests/bad-input/materials-malformed.json --list-materials",
+         "section-calc: error: " + kSource + "/tests/bad-input/materials-malformed.json: malformed JSON: parse error at line 1, column 73: syntax error while parsing object key - unexpected '}'; expected string literal\n"},
         {"--rect 0.1 0.1 --fy 1e8 --tol 1e-6", "section-calc: error: --tol, --order and --max-area go with --method cubature\n"},
         {"--rect 0.1 0.1 --fy 1e8 --method cubature --tol 1e-6 --order 3", "section-calc: error: give --tol (adaptive rule) or --order (fixed rule), not both\n"},
         {"--rect 0.1 0.1 --fy 1e8 --method cubature --tol 1e-20", "section-calc: error: cubature: the tolerance must be between 1e-13 and 0.1 (got 1e-20)\n"},

@@ -8,6 +8,7 @@
 
 #include "material_object.hpp"
 #include "plascap/input_error.hpp"
+#include "plascap/json_message.hpp"
 
 namespace plascap {
 namespace detail {
@@ -50,7 +51,7 @@ MaterialCatalogue MaterialCatalogue::parse(std::string_view json_text, const std
     try {
         root = nlohmann::json::parse(json_text.begin(), json_text.end());
     } catch (const nlohmann::json::exception& e) {
-        throw InputError(origin + ": malformed JSON: " + e.what());
+        throw InputError(origin + ": malformed JSON: " + readable_json_message(e.what()));
     }
     if (!root.is_object() || !root.contains("materials") || !root["materials"].is_array())
         throw InputError(origin + ": expected {\"format\": \"plascap-materials-1\", \"materials\": [...]}");

@@ -4,6 +4,7 @@
 
 #include "material_object.hpp"
 #include "plascap/input_error.hpp"
+#include "plascap/json_message.hpp"
 
 namespace plascap {
 namespace detail {
@@ -85,7 +86,7 @@ Material parse_material_json(std::string_view object_text, const std::string& wh
     try {
         value = nlohmann::json::parse(object_text.begin(), object_text.end());
     } catch (const nlohmann::json::exception& e) {
-        throw InputError(where + ": malformed JSON: " + e.what());
+        throw InputError(where + ": malformed JSON: " + readable_json_message(e.what()));
     }
     return detail::read_material_object(value, where);
 }

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "plascap/input_error.hpp"
+#include "plascap/json_message.hpp"
 #include "plascap/materials/material_json.hpp"
 #include "plascap/materials/mixture.hpp"
 
@@ -111,26 +112,7 @@ Part read_part(const json& value, const std::string& where, const std::optional<
     return part;
 }
 
-// nlohmann's message without its "[json.exception.<kind>.<id>] " prefix, and with bytes that are
-// not printable ASCII shown as \xNN (it quotes the offending input, which may be binary).
-std::string describe(const json::exception& e) {
-    std::string message = e.what();
-    if (!message.empty() && message[0] == '[') {
-        const std::size_t end = message.find("] ");
-        if (end != std::string::npos) message.erase(0, end + 2);
-    }
-    std::string printable;
-    for (unsigned char c : message) {
-        if (c >= 0x20 && c < 0x7f) {
-            printable += static_cast<char>(c);
-        } else {
-            char hex[8];
-            std::snprintf(hex, sizeof hex, "\\x%02X", c);
-            printable += hex;
-        }
-    }
-    return printable;
-}
+std::string describe(const json::exception& e) { return readable_json_message(e.what()); }
 
 json parse_json(std::string_view text) {
     try {
