@@ -195,12 +195,25 @@ TEST(SectionCalc, MaterialsCatalogue) {
     std::remove(user.c_str());
 }
 
+// --elastic: the rectangle's b·h³/12 and b·h²/6, and EA = E·A with a catalogue material.
+TEST(SectionCalc, ElasticBlock) {
+    const CliRun run = section_calc("--rect 0.1 0.2 --material S355 --elastic --only N --json");
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const nlohmann::json j = nlohmann::json::parse(run.out);
+    EXPECT_LT(relative_error(j["Ixx"].get<double>(), 0.1 * 0.008 / 12), 1e-14);
+    EXPECT_LT(relative_error(j["Wz"].get<double>(), 0.2 * 0.01 / 6), 1e-14);
+    EXPECT_LT(relative_error(j["EA"].get<double>(), 210e9 * 0.02), 1e-14);
+    const CliRun table = section_calc("--rect 0.1 0.2 --fy 1e8 --elastic");
+    ASSERT_EQ(table.exit_code, 0) << table.err;
+    EXPECT_NE(table.out.find("stiffness   not available: a material gives no E"), std::string::npos) << table.out;
+}
+
 // Every option is documented in --help.
 TEST(SectionCalc, HelpListsEveryOption) {
     const CliRun run = section_calc("--help");
     EXPECT_EQ(run.exit_code, 0);
     for (const char* option : {"FILE", "--rect", "--fy", "--material", "--materials", "--list-materials", "--shear",
-                               "--reference", "--only", "--method", "--tol", "--order", "--max-area", "--svg", "--json",
+                               "--reference", "--only", "--method", "--tol", "--order", "--max-area", "--svg", "--elastic", "--json",
                                "--version"})
         EXPECT_NE(run.out.find(option), std::string::npos) << option;
 }

@@ -65,6 +65,31 @@ std::string method_line(const ReportContext& context) {
     return text;
 }
 
+std::string elastic_block(const ElasticProperties& e) {
+    std::ostringstream out;
+    out << "\nelastic     " << format("Ixx = %.10g m⁴, Izz = %.10g m⁴", e.Ixx, e.Izz) << format(", Ixz = %.10g m⁴", e.Ixz) << "\n"
+        << "            " << format("I1 = %.10g m⁴, I2 = %.10g m⁴", e.I1, e.I2)
+        << format(", I1's axis at %.6g° from x towards z", e.principal_angle * 180.0 / 3.141592653589793) << "\n"
+        << "            " << format("Wx = %.10g m³, Wz = %.10g m³ (extreme fibre)", e.Wx, e.Wz) << "\n"
+        << "            " << format("rx = %.10g m, rz = %.10g m", e.rx, e.rz) << "\n";
+    if (e.stiffness)
+        out << "stiffness   " << format("EA = %.10g N, EIxx = %.10g N·m²", e.stiffness->EA, e.stiffness->EIxx)
+            << format(", EIzz = %.10g N·m², EIxz = %.10g N·m²", e.stiffness->EIzz, e.stiffness->EIxz) << "\n"
+            << "            " << format("modulus weighted, about x = %.10g m, z = %.10g m", e.stiffness->centroid.x, e.stiffness->centroid.z) << "\n";
+    else
+        out << "stiffness   not available: a material gives no E\n";
+    return out.str();
+}
+
+void add_elastic(nlohmann::ordered_json& out, const ElasticProperties& e) {
+    out["Ixx"] = e.Ixx, out["Izz"] = e.Izz, out["Ixz"] = e.Ixz;
+    out["I1"] = e.I1, out["I2"] = e.I2, out["principal_angle"] = e.principal_angle;
+    out["Wx"] = e.Wx, out["Wz"] = e.Wz, out["rx"] = e.rx, out["rz"] = e.rz;
+    if (!e.stiffness) return;
+    out["EA"] = e.stiffness->EA, out["EIxx"] = e.stiffness->EIxx, out["EIzz"] = e.stiffness->EIzz, out["EIxz"] = e.stiffness->EIxz;
+    out["stiffness_centroid"] = {e.stiffness->centroid.x, e.stiffness->centroid.z};
+}
+
 }  // namespace
 
 std::string capacity_table(const Capacities& c, const ReportContext& context) {
@@ -103,6 +128,7 @@ std::string capacity_table(const Capacities& c, const ReportContext& context) {
                       error.c_str(), padded(row.unit, 4).c_str(), row.meaning);
         out << line;
     }
+    if (context.elastic) out << elastic_block(*context.elastic);
     return out.str();
 }
 
@@ -117,6 +143,7 @@ std::string capacity_json(const Capacities& c, const ReportContext& context) {
     if (c.z_pna_neg) out["z_pna_neg"] = *c.z_pna_neg;
     if (c.x_pna_neg) out["x_pna_neg"] = *c.x_pna_neg;
     if (c.reference) out["reference"] = {c.reference->x, c.reference->z};
+    if (context.elastic) add_elastic(out, *context.elastic);
     out["shear"] = to_string(c.shear);
     out["method"] = context.method;
     if (context.cubature) {

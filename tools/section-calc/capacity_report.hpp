@@ -4,6 +4,7 @@
 
 #include "plascap/sections/capacities.hpp"
 #include "plascap/sections/cubature.hpp"
+#include "plascap/sections/elastic_properties.hpp"
 #include "plascap/sections/valid_section.hpp"
 
 namespace plascap::tools {
@@ -14,6 +15,7 @@ struct ReportContext {
     const ValidSection* section = nullptr;
     const CubatureOptions* cubature_options = nullptr;  // with method "cubature"
     const CubatureResult* cubature = nullptr;           // error estimates, mesh size, time
+    const ElasticProperties* elastic = nullptr;         // with --elastic
 };
 
 std::string capacity_table(const Capacities& capacities, const ReportContext& context);

@@ -16,6 +16,7 @@
 #include "plascap/materials/catalogue.hpp"
 #include "plascap/sections/capacities.hpp"
 #include "plascap/sections/cubature.hpp"
+#include "plascap/sections/elastic_properties.hpp"
 #include "plascap/sections/section_json.hpp"
 #include "plascap/sections/shapes.hpp"
 
@@ -36,6 +37,7 @@ struct Options {
     std::string material;
     std::vector<std::string> material_files;
     bool list_materials = false;
+    bool elastic = false;
     bool json = false;
 };
 
@@ -63,6 +65,8 @@ void add_options(CLI::App& app, Options& o) {
     app.add_option("--max-area", o.max_area, "cubature: largest triangle area [m²] (default: no bound, the "
                                              "constrained triangulation as it is)");
     app.add_option("--svg", o.svg, "Also draw the section, its mesh, neutral axes, centroid and joint point to this SVG file");
+    app.add_flag("--elastic", o.elastic, "Add the elastic properties: Ixx, Izz, Ixz, principal axes, moduli, radii of gyration, "
+                                         "and EA, EI (modulus weighted) when every material gives E");
     app.add_flag("--json", o.json, "Print one JSON object instead of the table");
     app.set_version_flag("--version", "section-calc (plascap) 0.1.0");
 }
@@ -169,6 +173,11 @@ int run(const Options& o) {
     }
     const plascap::Capacities capacities =
         cubature_result ? cubature_result->capacities : plascap::compute_capacities(valid, wanted);
+    std::optional<plascap::ElasticProperties> elastic;
+    if (o.elastic) {
+        elastic = plascap::elastic_properties(valid);
+        context.elastic = &*elastic;
+    }
     if (!o.svg.empty()) plascap::tools::write_section_svg(o.svg, valid, capacities, cubature.max_area, source);
     std::cout << (o.json ? plascap::tools::capacity_json(capacities, context)
                          : plascap::tools::capacity_table(capacities, context));
