@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "mesh_extrapolation.hpp"
 #include "plascap/input_error.hpp"
 #include "plascap/sections/ring_integrals.hpp"
 #include "plascap/sections/section_mesh.hpp"
@@ -156,34 +157,12 @@ double saint_venant_torsion_on_mesh(const ValidSection& section, double max_area
 }
 
 TorsionConstant saint_venant_torsion(const ValidSection& section, const TorsionOptions& options) {
-    if (!(options.relative_tolerance > 0.0 && options.relative_tolerance < 1.0))
-        throw InputError("torsion: the relative tolerance must be between 0 and 1");
     double area = 0.0;
     for (const Part& part : section.parts()) area += part_moments(part).area;
-    TorsionConstant result;
-    // J(h) = J − C·h² + …: halving the triangle area halves the error, so R = 2·J(h/√2) − J(h)
-    // removes it; the change of R from one level to the next estimates R's own error (it also
-    // catches slower convergence at re-entrant corners, where the h² law does not hold).
-    double max_area = area / 64.0, previous_J = 0.0, previous_R = 0.0;
-    std::size_t triangles = 0;
-    for (int level = 0;; ++level, max_area /= 2.0) {
-        const double J = saint_venant_torsion_on_mesh(section, max_area, &triangles);
-        if (level > 0) {
-            const double R = 2.0 * J - previous_J;
-            result.triangles = triangles;
-            if (level > 1) {
-                result.J = R;
-                result.error = std::abs(R - previous_R);
-                if (result.error <= options.relative_tolerance * std::abs(R)) {
-                    result.converged = true;
-                    return result;
-                }
-                if (2 * triangles > options.max_triangles) return result;
-            }
-            previous_R = R;
-        }
-        previous_J = J;
-    }
+    const detail::Extrapolated e = detail::extrapolate_over_meshes(
+        [&](double max_area, std::size_t& triangles) { return saint_venant_torsion_on_mesh(section, max_area, &triangles); },
+        area, options.relative_tolerance, options.max_triangles);
+    return {e.value, e.error, e.triangles, e.converged};
 }
 
 }  // namespace plascap

@@ -16,7 +16,7 @@
 namespace plascap {
 
 struct TorsionOptions {
-    double relative_tolerance = 1e-4;  // stop when two successive extrapolations agree to this
+    double relative_tolerance = 1e-4;  // stop when the error estimate is below this (relative)
     std::size_t max_triangles = 2000000;
 };
 
