@@ -3,6 +3,8 @@
 #include <benchmark/benchmark.h>
 
 #include "plascap/sections/cubature.hpp"
+#include "plascap/sections/plastic_torsion.hpp"
+#include "plascap/sections/torsion_constant.hpp"
 #include "plascap/sections/section_mesh.hpp"
 #include "plascap/sections/shapes.hpp"
 
@@ -60,3 +62,16 @@ void FixedRuleRefinedMesh(benchmark::State& state) {
 BENCHMARK(FixedRuleRefinedMesh)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
+
+// Issue 5's targets: J of the 100 × 50 mm rectangle to 1e-4 (≤ 20 ms), and T_p of a 100-vertex polygon.
+void TorsionConstantRectangle(benchmark::State& state) {
+    const plascap::ValidSection section = plascap::validate_section(plascap::rectangle_section(0.1, 0.05, 355e6));
+    for (auto _ : state) benchmark::DoNotOptimize(plascap::saint_venant_torsion(section));
+}
+BENCHMARK(TorsionConstantRectangle)->Unit(benchmark::kMillisecond);
+
+void PlasticTorsion100gon(benchmark::State& state) {
+    const plascap::ValidSection section = polygon(100);
+    for (auto _ : state) benchmark::DoNotOptimize(plascap::plastic_torsion(section));
+}
+BENCHMARK(PlasticTorsion100gon)->Unit(benchmark::kMillisecond);

@@ -203,6 +203,16 @@ TEST(SectionCalc, ElasticBlock) {
     EXPECT_LT(relative_error(j["Ixx"].get<double>(), 0.1 * 0.008 / 12), 1e-14);
     EXPECT_LT(relative_error(j["Wz"].get<double>(), 0.2 * 0.01 / 6), 1e-14);
     EXPECT_LT(relative_error(j["EA"].get<double>(), 210e9 * 0.02), 1e-14);
+    // The square's J = 0.14058·a⁴ (values.md) and T_p = τy·a³/3 (von Mises for S355); a 2 m segment.
+    const CliRun square = section_calc("--rect 0.1 0.1 --material S355 --elastic --length 2 --json");
+    ASSERT_EQ(square.exit_code, 0) << square.err;
+    const nlohmann::json q = nlohmann::json::parse(square.out);
+    EXPECT_LT(relative_error(q["J"].get<double>(), 0.14058e-4), 1e-4);
+    EXPECT_LT(relative_error(q["GJ"].get<double>(), 81e9 * q["J"].get<double>()), 1e-14);
+    EXPECT_LT(relative_error(q["My_plastic_torsion"].get<double>(), 355e6 / std::sqrt(3.0) * 1e-3 / 3), 1e-4);
+    EXPECT_LT(relative_error(q["joint"]["axial"].get<double>(), 210e9 * 0.01 / 2), 1e-14);
+    EXPECT_LT(relative_error(q["joint"]["shear_z"].get<double>(), 12 * 210e9 * 1e-4 / 12 / 8), 1e-13);
+    EXPECT_LT(relative_error(q["joint"]["torsion"].get<double>(), q["GJ"].get<double>() / 2), 1e-14);
     const CliRun table = section_calc("--rect 0.1 0.2 --fy 1e8 --elastic");
     ASSERT_EQ(table.exit_code, 0) << table.err;
     EXPECT_NE(table.out.find("stiffness   not available: a material gives no E"), std::string::npos) << table.out;
@@ -213,7 +223,8 @@ TEST(SectionCalc, HelpListsEveryOption) {
     const CliRun run = section_calc("--help");
     EXPECT_EQ(run.exit_code, 0);
     for (const char* option : {"FILE", "--rect", "--fy", "--material", "--materials", "--list-materials", "--shear",
-                               "--reference", "--only", "--method", "--tol", "--order", "--max-area", "--svg", "--elastic", "--json",
+                               "--reference", "--only", "--method", "--tol", "--order", "--max-area", "--svg", "--elastic",
+                               "--length", "--json",
                                "--version"})
         EXPECT_NE(run.out.find(option), std::string::npos) << option;
 }
@@ -236,6 +247,9 @@ TEST(SectionCalc, BadCommandLines) {
         {"--materials /nonexistent/m.json --list-materials", "section-calc: error: /nonexistent/m.json: cannot open the materials file\n"},
         {"--materials " + kSource + "/tests/bad-input/materials-malformed.json --list-materials",
          "section-calc: error: " + kSource + "/tests/bad-input/materials-malformed.json: malformed JSON: parse error at line 1, column 73: syntax error while parsing object key - unexpected '}'; expected string literal\n"},
+        {"--rect 0.1 0.1 --fy 1e8 --length 2", "section-calc: error: --length goes with --elastic\n"},
+        {"--rect 0.1 0.1 --fy 1e8 --elastic --length 2", "section-calc: error: --length: the joint stiffness needs E for every material\n"},
+        {"--rect 0.1 0.1 --material S355 --elastic --length -2", "section-calc: error: joint stiffness: the segment length must be a positive finite number in m\n"},
         {"--rect 0.1 0.1 --fy 1e8 --tol 1e-6", "section-calc: error: --tol, --order and --max-area go with --method cubature\n"},
         {"--rect 0.1 0.1 --fy 1e8 --method cubature --tol 1e-6 --order 3", "section-calc: error: give --tol (adaptive rule) or --order (fixed rule), not both\n"},
         {"--rect 0.1 0.1 --fy 1e8 --method cubature --tol 1e-20", "section-calc: error: cubature: the tolerance must be between 1e-13 and 0.1 (got 1e-20)\n"},

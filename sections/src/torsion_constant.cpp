@@ -162,7 +162,12 @@ TorsionConstant saint_venant_torsion(const ValidSection& section, const TorsionO
     const detail::Extrapolated e = detail::extrapolate_over_meshes(
         [&](double max_area, std::size_t& triangles) { return saint_venant_torsion_on_mesh(section, max_area, &triangles); },
         area, options.relative_tolerance, options.max_triangles);
-    return {e.value, e.error, e.triangles, e.converged};
+    TorsionConstant result{e.value, std::nullopt, e.error, e.triangles, e.converged};
+    const std::optional<double> G = section.parts().front().material.shear_modulus();
+    bool same_G = G.has_value();
+    for (const Part& part : section.parts()) same_G = same_G && part.material.shear_modulus() == G;
+    if (same_G) result.GJ = *G * result.J;
+    return result;
 }
 
 }  // namespace plascap

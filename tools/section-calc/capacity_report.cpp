@@ -81,6 +81,26 @@ std::string elastic_block(const ElasticProperties& e) {
     return out.str();
 }
 
+std::string torsion_block(const TorsionConstant& t, const PlasticTorsion& tp, std::optional<double> My) {
+    std::ostringstream out;
+    out << "torsion     " << format("J = %.10g m⁴ (± %.2g, Saint-Venant, FEM)", t.J, t.error);
+    if (t.GJ) out << format(", GJ = %.10g N·m²", *t.GJ);
+    out << "\n            " << format("T_p = %.10g N·m (± %.2g, fully plastic, sand heap)", tp.T, tp.error);
+    if (My) out << format("; the paper's My/T_p = %.4f", *My / tp.T);
+    out << "\n";
+    return out.str();
+}
+
+std::string joint_block(const JointStiffness& k, double length) {
+    std::ostringstream out;
+    out << "joint       " << format("a segment of L = %g m: EA/L = %.6g N/m", length, k.axial)
+        << format(", EIxx/L = %.6g, EIzz/L = %.6g N·m/rad", k.bending_x, k.bending_z) << "\n"
+        << "            " << format("12EI/L³ = %.6g (along x), %.6g N/m (along z)", k.shear_x, k.shear_z);
+    if (k.torsion) out << format(", GJ/L = %.6g N·m/rad", *k.torsion);
+    out << "\n";
+    return out.str();
+}
+
 void add_elastic(nlohmann::ordered_json& out, const ElasticProperties& e) {
     out["Ixx"] = e.Ixx, out["Izz"] = e.Izz, out["Ixz"] = e.Ixz;
     out["I1"] = e.I1, out["I2"] = e.I2, out["principal_angle"] = e.principal_angle;
@@ -129,6 +149,8 @@ std::string capacity_table(const Capacities& c, const ReportContext& context) {
         out << line;
     }
     if (context.elastic) out << elastic_block(*context.elastic);
+    if (context.torsion && context.plastic_torsion) out << torsion_block(*context.torsion, *context.plastic_torsion, c.My);
+    if (context.joint) out << joint_block(*context.joint, context.length);
     return out.str();
 }
 
@@ -144,6 +166,20 @@ std::string capacity_json(const Capacities& c, const ReportContext& context) {
     if (c.x_pna_neg) out["x_pna_neg"] = *c.x_pna_neg;
     if (c.reference) out["reference"] = {c.reference->x, c.reference->z};
     if (context.elastic) add_elastic(out, *context.elastic);
+    if (context.torsion) {
+        out["J"] = context.torsion->J, out["J_error"] = context.torsion->error;
+        if (context.torsion->GJ) out["GJ"] = *context.torsion->GJ;
+    }
+    if (context.plastic_torsion) {
+        out["My_plastic_torsion"] = context.plastic_torsion->T;
+        out["My_plastic_torsion_error"] = context.plastic_torsion->error;
+    }
+    if (context.joint) {
+        out["joint"] = {{"length", context.length}, {"axial", context.joint->axial}, {"shear_x", context.joint->shear_x},
+                        {"shear_z", context.joint->shear_z}, {"bending_x", context.joint->bending_x},
+                        {"bending_z", context.joint->bending_z}};
+        if (context.joint->torsion) out["joint"]["torsion"] = *context.joint->torsion;
+    }
     out["shear"] = to_string(c.shear);
     out["method"] = context.method;
     if (context.cubature) {

@@ -5,6 +5,9 @@
 #include "plascap/sections/capacities.hpp"
 #include "plascap/sections/cubature.hpp"
 #include "plascap/sections/elastic_properties.hpp"
+#include "plascap/sections/joint_stiffness.hpp"
+#include "plascap/sections/plastic_torsion.hpp"
+#include "plascap/sections/torsion_constant.hpp"
 #include "plascap/sections/valid_section.hpp"
 
 namespace plascap::tools {
@@ -16,6 +19,10 @@ struct ReportContext {
     const CubatureOptions* cubature_options = nullptr;  // with method "cubature"
     const CubatureResult* cubature = nullptr;           // error estimates, mesh size, time
     const ElasticProperties* elastic = nullptr;         // with --elastic
+    const TorsionConstant* torsion = nullptr;           // with --elastic: J
+    const PlasticTorsion* plastic_torsion = nullptr;    // with --elastic: T_p
+    const JointStiffness* joint = nullptr;              // with --length
+    double length = 0.0;                                // [m], with --length
 };
 
 std::string capacity_table(const Capacities& capacities, const ReportContext& context);

@@ -17,6 +17,9 @@
 #include "plascap/sections/capacities.hpp"
 #include "plascap/sections/cubature.hpp"
 #include "plascap/sections/elastic_properties.hpp"
+#include "plascap/sections/joint_stiffness.hpp"
+#include "plascap/sections/plastic_torsion.hpp"
+#include "plascap/sections/torsion_constant.hpp"
 #include "plascap/sections/section_json.hpp"
 #include "plascap/sections/shapes.hpp"
 
@@ -38,6 +41,7 @@ struct Options {
     std::vector<std::string> material_files;
     bool list_materials = false;
     bool elastic = false;
+    std::optional<double> length;
     bool json = false;
 };
 
@@ -67,6 +71,8 @@ void add_options(CLI::App& app, Options& o) {
     app.add_option("--svg", o.svg, "Also draw the section, its mesh, neutral axes, centroid and joint point to this SVG file");
     app.add_flag("--elastic", o.elastic, "Add the elastic properties: Ixx, Izz, Ixz, principal axes, moduli, radii of gyration, "
                                          "and EA, EI (modulus weighted) when every material gives E");
+    app.add_option("--length", o.length, "With --elastic: the joint stiffness of a segment of this length [m]: EA/L, EI/L, "
+                                         "12EI/L³, GJ/L");
     app.add_flag("--json", o.json, "Print one JSON object instead of the table");
     app.set_version_flag("--version", "section-calc (plascap) 0.1.0");
 }
@@ -174,9 +180,23 @@ int run(const Options& o) {
     const plascap::Capacities capacities =
         cubature_result ? cubature_result->capacities : plascap::compute_capacities(valid, wanted);
     std::optional<plascap::ElasticProperties> elastic;
+    std::optional<plascap::TorsionConstant> torsion;
+    std::optional<plascap::PlasticTorsion> plastic_torsion;
+    std::optional<plascap::JointStiffness> joint;
+    if (o.length && !o.elastic) throw plascap::InputError("--length goes with --elastic");
     if (o.elastic) {
         elastic = plascap::elastic_properties(valid);
+        torsion = plascap::saint_venant_torsion(valid);
+        plastic_torsion = plascap::plastic_torsion(valid);
         context.elastic = &*elastic;
+        context.torsion = &*torsion;
+        context.plastic_torsion = &*plastic_torsion;
+        if (o.length) {
+            if (!elastic->stiffness) throw plascap::InputError("--length: the joint stiffness needs E for every material");
+            joint = plascap::joint_stiffness(*elastic->stiffness, torsion->GJ, *o.length);
+            context.joint = &*joint;
+            context.length = *o.length;
+        }
     }
     if (!o.svg.empty()) plascap::tools::write_section_svg(o.svg, valid, capacities, cubature.max_area, source);
     std::cout << (o.json ? plascap::tools::capacity_json(capacities, context)

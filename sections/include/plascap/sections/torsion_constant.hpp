@@ -10,6 +10,7 @@
 //
 // Parts are solved one by one and their J added: parts that only touch are not welded together.
 #include <cstddef>
+#include <optional>
 
 #include "plascap/sections/valid_section.hpp"
 
@@ -22,6 +23,7 @@ struct TorsionOptions {
 
 struct TorsionConstant {
     double J = 0.0;        // [m⁴]
+    std::optional<double> GJ;  // [N·m²], when every part has the same shear modulus G (else parts differ: not summed)
     double error = 0.0;    // estimated absolute error [m⁴]
     std::size_t triangles = 0;  // of the finest mesh
     bool converged = false;     // false: max_triangles reached first
