@@ -1,8 +1,9 @@
 #pragma once
-// Meshes of halving triangle area until a quantity with a smooth O(h²) discretisation error (J by
-// FEM, from one side) settles: halving the area halves the error, so R = 2·Q(h/√2) − Q(h) removes
-// its leading term, and the change of R between levels estimates R's own error (and exposes slower
-// convergence at re-entrant corners, where the h² law does not hold).
+// Meshes of halving triangle area until a quantity with a smooth O(h^p) discretisation error (J by
+// FEM, from one side) settles: halving the area divides the error by r = 2^(p/2), so
+// R = (r·Q(h/√2) − Q(h))/(r − 1) removes its leading term, and the change of R between levels
+// estimates R's own error (and exposes slower convergence at re-entrant corners, where the law
+// does not hold).
 #include <cmath>
 #include <cstddef>
 
@@ -19,7 +20,8 @@ struct Extrapolated {
 
 // solve(max_area, triangles&) → Q on a mesh with that triangle area bound. Starts at area/64.
 template <class Solve>
-Extrapolated extrapolate_over_meshes(Solve solve, double area, double tolerance, std::size_t max_triangles) {
+Extrapolated extrapolate_over_meshes(Solve solve, double area, double tolerance, std::size_t max_triangles,
+                                     double order) {
     if (!(tolerance > 0.0 && tolerance < 1.0)) throw InputError("the relative tolerance must be between 0 and 1");
     Extrapolated result;
     double max_area = area / 64.0, previous_Q = 0.0, previous_R = 0.0;
@@ -28,7 +30,8 @@ Extrapolated extrapolate_over_meshes(Solve solve, double area, double tolerance,
         const double Q = solve(max_area, triangles);
         result.triangles = triangles;
         if (level > 0) {
-            const double R = 2.0 * Q - previous_Q;
+            const double r = std::pow(2.0, order / 2.0);
+            const double R = (r * Q - previous_Q) / (r - 1.0);
             if (level > 1) {
                 result.value = R;
                 result.error = std::abs(R - previous_R);

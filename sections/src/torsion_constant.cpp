@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <stdexcept>
 #include <vector>
@@ -81,7 +82,7 @@ Unknowns number_unknowns(const SectionMesh& mesh, std::size_t part) {
         loop_area[loops.root(e.from)] += 0.5 * (a.x * b.z - b.x * a.z);
     }
     Unknowns u;
-    u.of_vertex.assign(mesh.vertices.size(), kNotInPart);  // kFixed − 1: not in this part
+    u.of_vertex.assign(mesh.vertices.size(), kNotInPart);
     std::vector<std::size_t> unknown_of_loop(mesh.vertices.size(), kNotInPart);
     for (const Edge& e : boundary) {
         const std::size_t loop = loops.root(e.from);
@@ -103,10 +104,31 @@ Unknowns number_unknowns(const SectionMesh& mesh, std::size_t part) {
     return u;
 }
 
-// J of one part: assemble the P1 Laplacian and the load 2∫N_i dA (+ 2·A_k on hole unknowns), solve
-// K·φ = f, and J = f·φ (= 2∫φ dA + 2·Σ c_k·A_k at the discrete solution).
+// The unknown of each edge's midpoint (quadratic elements): a boundary edge's takes its loop's
+// (0 on the outer boundary, the hole's shared unknown), an inner edge's a new one.
+std::map<std::pair<std::size_t, std::size_t>, std::size_t> number_midpoints(const SectionMesh& mesh, std::size_t part,
+                                                                             Unknowns& u) {
+    std::map<std::pair<std::size_t, std::size_t>, int> uses;
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+        if (mesh.part_of[t] != part) continue;
+        for (int k = 0; k < 3; ++k) {
+            const std::size_t a = mesh.triangles[t][k], b = mesh.triangles[t][(k + 1) % 3];
+            ++uses[{std::min(a, b), std::max(a, b)}];
+        }
+    }
+    std::map<std::pair<std::size_t, std::size_t>, std::size_t> midpoint;
+    for (const auto& [edge, count] : uses)
+        midpoint[edge] = count == 1 ? u.of_vertex[edge.first] : u.count++;  // both ends share the loop's unknown
+    return midpoint;
+}
+
+// J of one part with quadratic triangles (6 nodes): assemble ∫∇N_a·∇N_b dA (exact with the
+// 3-point edge-midpoint rule: the integrand is quadratic) and the load 2∫N_a dA (0 at the
+// corners, 2A/3 at the midpoints) plus 2·A_k on each hole's unknown; solve K·φ = f; J = f·φ
+// (= 2∫φ dA + 2·Σ c_k·A_k at the discrete solution).
 double part_torsion(const SectionMesh& mesh, std::size_t part) {
-    const Unknowns u = number_unknowns(mesh, part);
+    Unknowns u = number_unknowns(mesh, part);
+    const auto midpoint = number_midpoints(mesh, part, u);
     if (u.count == 0) return 0.0;
     std::vector<Eigen::Triplet<double>> entries;
     Eigen::VectorXd load = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(u.count));
@@ -115,23 +137,39 @@ double part_torsion(const SectionMesh& mesh, std::size_t part) {
         const auto& v = mesh.triangles[t];
         const Point p[3] = {mesh.vertices[v[0]], mesh.vertices[v[1]], mesh.vertices[v[2]]};
         const double area = 0.5 * ((p[1].x - p[0].x) * (p[2].z - p[0].z) - (p[2].x - p[0].x) * (p[1].z - p[0].z));
-        // ∇N_i = (z_j − z_k, x_k − x_j)/(2A) for (i, j, k) cyclic: K_ij = A·∇N_i·∇N_j.
+        // ∇L_i = (z_j − z_k, x_k − x_j)/(2A) for (i, j, k) cyclic.
         double gx[3], gz[3];
         for (int i = 0; i < 3; ++i) {
             const Point pj = p[(i + 1) % 3], pk = p[(i + 2) % 3];
             gx[i] = (pj.z - pk.z) / (2.0 * area);
             gz[i] = (pk.x - pj.x) / (2.0 * area);
         }
+        std::size_t node[6];
         for (int i = 0; i < 3; ++i) {
-            const std::size_t ui = u.of_vertex[v[i]];
-            if (ui == kFixed) continue;
-            load[static_cast<Eigen::Index>(ui)] += 2.0 * area / 3.0;  // 2∫N_i dA
-            for (int j = 0; j < 3; ++j) {
-                const std::size_t uj = u.of_vertex[v[j]];
-                if (uj == kFixed) continue;
-                entries.emplace_back(static_cast<Eigen::Index>(ui), static_cast<Eigen::Index>(uj),
-                                     area * (gx[i] * gx[j] + gz[i] * gz[j]));
+            node[i] = u.of_vertex[v[i]];
+            const std::size_t a = v[i], b = v[(i + 1) % 3];
+            node[3 + i] = midpoint.at({std::min(a, b), std::max(a, b)});  // midpoint of edge i–(i+1)
+        }
+        // Gradients of N_i = L_i(2L_i − 1) and N_(i,i+1) = 4·L_i·L_(i+1) at the edge midpoints q.
+        double k_local[6][6] = {};
+        for (int q = 0; q < 3; ++q) {
+            double L[3] = {0.0, 0.0, 0.0};
+            L[q] = 0.5, L[(q + 1) % 3] = 0.5;
+            double dx[6], dz[6];
+            for (int i = 0; i < 3; ++i) {
+                dx[i] = (4.0 * L[i] - 1.0) * gx[i], dz[i] = (4.0 * L[i] - 1.0) * gz[i];
+                const int j = (i + 1) % 3;
+                dx[3 + i] = 4.0 * (L[j] * gx[i] + L[i] * gx[j]), dz[3 + i] = 4.0 * (L[j] * gz[i] + L[i] * gz[j]);
             }
+            for (int a = 0; a < 6; ++a)
+                for (int b = 0; b < 6; ++b) k_local[a][b] += area / 3.0 * (dx[a] * dx[b] + dz[a] * dz[b]);
+        }
+        for (int a = 0; a < 6; ++a) {
+            if (node[a] == kFixed) continue;
+            if (a >= 3) load[static_cast<Eigen::Index>(node[a])] += 2.0 * area / 3.0;  // 2∫4·L_i·L_j dA
+            for (int b = 0; b < 6; ++b)
+                if (node[b] != kFixed)
+                    entries.emplace_back(static_cast<Eigen::Index>(node[a]), static_cast<Eigen::Index>(node[b]), k_local[a][b]);
         }
     }
     for (std::size_t h = 0; h < u.hole_unknown.size(); ++h) load[static_cast<Eigen::Index>(u.hole_unknown[h])] += 2.0 * u.hole_area[h];
@@ -161,7 +199,7 @@ TorsionConstant saint_venant_torsion(const ValidSection& section, const TorsionO
     for (const Part& part : section.parts()) area += part_moments(part).area;
     const detail::Extrapolated e = detail::extrapolate_over_meshes(
         [&](double max_area, std::size_t& triangles) { return saint_venant_torsion_on_mesh(section, max_area, &triangles); },
-        area, options.relative_tolerance, options.max_triangles);
+        area, options.relative_tolerance, options.max_triangles, 4.0);  // quadratic elements: O(h⁴)
     TorsionConstant result{e.value, std::nullopt, e.error, e.triangles, e.converged};
     const std::optional<double> G = section.parts().front().material.shear_modulus();
     bool same_G = G.has_value();

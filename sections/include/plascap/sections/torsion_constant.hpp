@@ -3,10 +3,11 @@
 // Goodier, Theory of Elasticity, §§ 101–104): ∇²φ = −2 in the material, φ = 0 on the outer boundary
 // and φ = c_k on each hole's boundary, c_k such that the hole's circulation closes (Bredt); then
 // J = 2∫φ dA + 2·Σ c_k·A_k. Solved as the minimum of ½∫|∇φ|² dA − 2∫φ dA − 2·Σ c_k·A_k with
-// linear triangles on the CGAL mesh, each hole's boundary sharing one unknown, by Eigen's sparse
-// Cholesky (SimplicialLDLT). The discrete J approaches J from below as O(h²): meshes of halving
-// triangle area are solved, each pair Richardson-extrapolated (R = 2·J(h/√2) − J(h)), until two
-// successive R agree to the tolerance; the last R is the result and their difference the estimate.
+// quadratic (6-node) triangles on the CGAL mesh, each hole's boundary sharing one unknown, by
+// Eigen's sparse Cholesky (SimplicialLDLT). The discrete J approaches J from below as O(h⁴) on
+// smooth solutions: meshes of halving triangle area are solved, each pair Richardson-extrapolated
+// (R = (4·J(h/√2) − J(h))/3), until two successive R agree to the tolerance; the last R is the
+// result and their difference the estimate.
 //
 // Parts are solved one by one and their J added: parts that only touch are not welded together.
 #include <cstddef>
