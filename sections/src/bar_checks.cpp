@@ -4,6 +4,7 @@
 #include <sstream>
 #include <string>
 
+#include "planar_distance.hpp"
 #include "plascap/input_error.hpp"
 #include "plascap/sections/ring_integrals.hpp"
 #include "topology_checks.hpp"
@@ -21,18 +22,6 @@ std::string number(double value) {
 }
 
 double radius_of(const Bar& bar) { return std::sqrt(bar.area / kPi); }  // a round bar of that area
-
-double distance_to_segment(Point p, Point a, Point b) {
-    const double dx = b.x - a.x, dz = b.z - a.z;
-    const double t = std::fmax(0.0, std::fmin(1.0, ((p.x - a.x) * dx + (p.z - a.z) * dz) / (dx * dx + dz * dz)));
-    return std::hypot(p.x - a.x - t * dx, p.z - a.z - t * dz);
-}
-
-double distance_to_ring(Point p, const Ring& ring) {
-    double d = INFINITY;
-    for (std::size_t i = 0; i < ring.size(); ++i) d = std::fmin(d, distance_to_segment(p, ring[i], ring[i + 1 == ring.size() ? 0 : i + 1]));
-    return d;
-}
 
 void check_bar_inside(const Part& part, const Bar& bar, const std::string& where) {
     const std::string at = "(" + number(bar.at.x) + ", " + number(bar.at.z) + ") m";

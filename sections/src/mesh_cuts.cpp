@@ -5,6 +5,7 @@
 #include <limits>
 #include <tuple>
 
+#include "planar_distance.hpp"
 #include "plascap/sections/ring_integrals.hpp"
 
 namespace plascap::detail {
@@ -142,12 +143,6 @@ void add_chords(const std::vector<Ring>& rings, const Line& line, std::vector<do
         }
         chords.emplace_back(on_line(line, from), on_line(line, hi));
     }
-}
-
-double distance_to_segment(Point p, Point a, Point b) {
-    const double dx = b.x - a.x, dz = b.z - a.z;
-    const double t = std::clamp(((p.x - a.x) * dx + (p.z - a.z) * dz) / (dx * dx + dz * dz), 0.0, 1.0);
-    return std::hypot(p.x - a.x - t * dx, p.z - a.z - t * dz);
 }
 
 // The joint point goes in unless it is outside the part's box, on or next to a ring edge (where

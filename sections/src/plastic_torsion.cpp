@@ -5,6 +5,7 @@
 #include <limits>
 #include <vector>
 
+#include "planar_distance.hpp"
 #include "plascap/input_error.hpp"
 #include "plascap/sections/ring_integrals.hpp"
 #include "plascap/sections/section_mesh.hpp"
@@ -13,18 +14,8 @@
 namespace plascap {
 namespace {
 
-double distance_to_segment(Point p, Point a, Point b) {
-    const double dx = b.x - a.x, dz = b.z - a.z;
-    const double length2 = dx * dx + dz * dz;
-    const double t = length2 > 0.0 ? std::clamp(((p.x - a.x) * dx + (p.z - a.z) * dz) / length2, 0.0, 1.0) : 0.0;
-    return std::hypot(p.x - a.x - t * dx, p.z - a.z - t * dz);
-}
-
-double distance_to_ring(Point p, const Ring& ring) {
-    double d = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0, n = ring.size(); i < n; ++i) d = std::min(d, distance_to_segment(p, ring[i], ring[i + 1 == n ? 0 : i + 1]));
-    return d;
-}
+using detail::distance_to_ring;
+using detail::distance_to_segment;
 
 // The gap between two rings that do not cross: the nearest pair of points lies at a vertex of one.
 double distance_between(const Ring& a, const Ring& b) {
