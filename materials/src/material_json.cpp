@@ -34,23 +34,11 @@ std::string read_text(const json& object, const char* key, const std::string& wh
     return value.get<std::string>();
 }
 
-void reject_unknown_keys(const json& object, const std::string& where) {
-    for (const auto& item : object.items()) {
-        bool known = false;
-        std::string list;
-        for (const char* key : kKeys) {
-            known = known || item.key() == key;
-            list += (list.empty() ? "" : ", ") + std::string(key);
-        }
-        if (!known) fail(where, "unknown key \"" + item.key() + "\" in a material (known keys: " + list + ")");
-    }
-}
-
 }  // namespace
 
 Material read_material_object(const json& value, const std::string& where) {
     if (!value.is_object()) fail(where, std::string("expected a material object such as {\"fy\": 355e6}, got ") + value.type_name());
-    reject_unknown_keys(value, where);
+    reject_unknown_keys(value, where, kKeys, " in a material");
     if (!value.contains("fy")) fail(where, "the material has no yield stress \"fy\" [Pa]");
     Material m;
     m.fy = read_number(value, "fy", where);

@@ -20,18 +20,6 @@ using nlohmann::json;
 
 std::string type_name(const json& value) { return value.type_name(); }
 
-void reject_unknown_keys(const json& object, const std::string& where, std::initializer_list<const char*> known) {
-    for (const auto& item : object.items()) {
-        bool ok = false;
-        std::string list;
-        for (const char* k : known) {
-            ok = ok || item.key() == k;
-            list += (list.empty() ? "" : ", ") + std::string(k);
-        }
-        if (!ok) fail(where, "unknown key \"" + item.key() + "\" (known keys: " + list + ")");
-    }
-}
-
 double read_number(const json& value, const std::string& where) {
     if (!value.is_number()) fail(where, "expected a number, got " + type_name(value));
     return value.get<double>();
