@@ -1,0 +1,61 @@
+#pragma once
+// A plastic joint in an unmodified Bullet: a btGeneric6DofSpring2Constraint whose rows follow a
+// PlasticJointLaw (adapters/common). Per dof: free (no row), rigid (a locked limit row) or plastic
+// (a motor row: Hold = target velocity 0 bounded by the capacity; Push = exactly the capped spring
+// force). After every step, as a btActionInterface, it reads the joint feedback (world frame, torque
+// about b's centre of mass), turns it into joint-frame dof forces, settles the law, plans the next
+// step's rows, and disables the constraint when the joint breaks.
+#include <btBulletDynamicsCommon.h>
+
+#include <memory>
+
+#include "plascap/adapters/joint_loads.hpp"
+#include "plascap/adapters/plastic_joint_law.hpp"
+
+namespace plascap {
+
+class BulletPlasticJoint : public btActionInterface {
+public:
+    // `a` may be nullptr: b is then joined to the world. `frame_in_world`: origin = anchor, basis
+    // columns = the joint's x, y (beam axis) and z.
+    BulletPlasticJoint(btRigidBody* a, btRigidBody& b, const btTransform& frame_in_world,
+                       const PlasticJointSettings& settings);
+    ~BulletPlasticJoint() override;
+    BulletPlasticJoint(const BulletPlasticJoint&) = delete;
+    BulletPlasticJoint& operator=(const BulletPlasticJoint&) = delete;
+
+    // Adds the constraint (collisions between a and b disabled) and this action to `world` and
+    // plans the first step of length dt. Call once, before stepping.
+    void attach(btDynamicsWorld& world, double dt);
+    void detach(btDynamicsWorld& world);
+
+    void updateAction(btCollisionWorld* world, btScalar dt) override;
+    void debugDraw(btIDebugDraw*) override {}
+
+    const PlasticJointLaw& law() const { return law_; }
+    btGeneric6DofSpring2Constraint& constraint() { return *constraint_; }
+    // Dof positions now: b relative to a in the joint frame [m, rad].
+    PerDof<double> positions();
+    // The generalised forces the rows applied to b during the last step [N, N·m].
+    const PerDof<double>& forces() const { return forces_; }
+    double time() const { return time_; }
+
+private:
+    void set_up_rows();
+    void plan(double dt);
+    void apply(const PerDof<std::optional<RowCommand>>& commands);
+    JointAxesInWorld axes_in_world() const;
+    PerDof<double> effective_masses(const JointAxesInWorld& axes) const;
+
+    btRigidBody* a_;
+    btRigidBody& b_;
+    std::unique_ptr<btGeneric6DofSpring2Constraint> constraint_;
+    btJointFeedback feedback_{};
+    PlasticJointLaw law_;
+    JointAxesInWorld planned_axes_{};
+    Vec3 planned_centre_of_b_{};
+    PerDof<double> forces_{};
+    double time_ = 0.0;
+};
+
+}  // namespace plascap

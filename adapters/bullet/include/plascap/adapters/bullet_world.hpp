@@ -1,0 +1,47 @@
+#pragma once
+// A Bullet dynamics world with everything it owns (collision configuration, dispatcher, broadphase,
+// sequential-impulse solver), for tools, tests and benchmarks. Bodies and constraints added to it
+// stay owned by the caller.
+#include <btBulletDynamicsCommon.h>
+
+#include <memory>
+
+namespace plascap {
+
+class BulletWorld {
+public:
+    // gravity [m/s²] in world coordinates; iterations: the solver's iterations per step.
+    BulletWorld(const btVector3& gravity, int iterations);
+    ~BulletWorld();
+    BulletWorld(const BulletWorld&) = delete;
+    BulletWorld& operator=(const BulletWorld&) = delete;
+
+    btDiscreteDynamicsWorld& world() { return *world_; }
+    // One fixed step of dt seconds (no interpolation sub-steps).
+    void step(double dt);
+
+private:
+    std::unique_ptr<btDefaultCollisionConfiguration> configuration_;
+    std::unique_ptr<btCollisionDispatcher> dispatcher_;
+    std::unique_ptr<btDbvtBroadphase> broadphase_;
+    std::unique_ptr<btSequentialImpulseConstraintSolver> solver_;
+    std::unique_ptr<btDiscreteDynamicsWorld> world_;
+};
+
+// A box body of half extents `half` [m], mass [kg] (0: static), at `transform`; never sleeps, so a
+// slow plastic flow is never frozen by deactivation. Owns its shape and motion state.
+class BulletBox {
+public:
+    BulletBox(const btVector3& half, double mass, const btTransform& transform);
+    ~BulletBox();
+    BulletBox(const BulletBox&) = delete;
+    BulletBox& operator=(const BulletBox&) = delete;
+    btRigidBody& body() { return *body_; }
+
+private:
+    std::unique_ptr<btBoxShape> shape_;
+    std::unique_ptr<btDefaultMotionState> motion_;
+    std::unique_ptr<btRigidBody> body_;
+};
+
+}  // namespace plascap

@@ -1,0 +1,148 @@
+#include "plascap/adapters/bullet_plastic_joint.hpp"
+
+#include <cmath>
+
+namespace plascap {
+namespace {
+
+// A Push row asks for a relative speed it can never reach, so the solver always ends on its bound:
+// the force applied is exactly the bound (as Bullet's own Spring2 spring rows do).
+constexpr double kPushSpeed = 1e9;  // [m/s or rad/s]
+
+Vec3 to_vec3(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
+btVector3 to_bt(const Vec3& v) { return btVector3(v[0], v[1], v[2]); }
+
+std::unique_ptr<btGeneric6DofSpring2Constraint> make_constraint(btRigidBody* a, btRigidBody& b,
+                                                                 const btTransform& frame) {
+    const btTransform in_b = b.getCenterOfMassTransform().inverse() * frame;
+    if (a == nullptr) return std::make_unique<btGeneric6DofSpring2Constraint>(b, in_b);
+    const btTransform in_a = a->getCenterOfMassTransform().inverse() * frame;
+    return std::make_unique<btGeneric6DofSpring2Constraint>(*a, b, in_a, in_b);
+}
+
+// 1 / (J M⁻¹ Jᵀ) of one body's part of a row along `axis`; a static body contributes nothing.
+double inverse_mass_along(const btRigidBody& body, const btVector3& axis, const btVector3* lever) {
+    const btVector3 angular = lever ? lever->cross(axis) : axis;
+    double w = (body.getInvInertiaTensorWorld() * angular).dot(angular);
+    if (lever) w += body.getInvMass();
+    return w;
+}
+
+}  // namespace
+
+BulletPlasticJoint::BulletPlasticJoint(btRigidBody* a, btRigidBody& b, const btTransform& frame_in_world,
+                                       const PlasticJointSettings& settings)
+    : a_(a), b_(b), constraint_(make_constraint(a, b, frame_in_world)), law_(settings) {
+    constraint_->setJointFeedback(&feedback_);
+    constraint_->enableFeedback(true);
+    set_up_rows();
+}
+
+BulletPlasticJoint::~BulletPlasticJoint() = default;
+
+void BulletPlasticJoint::set_up_rows() {
+    for (Dof dof : kAllDofs) {
+        const int i = static_cast<int>(index(dof));
+        switch (law_.mode(dof)) {
+            case DofMode::Rigid:
+                constraint_->setLimit(i, 0.0, 0.0);  // lo == hi: locked at the assembled position
+                break;
+            case DofMode::Free:
+            case DofMode::Plastic:
+                constraint_->setLimit(i, 1.0, -1.0);  // lo > hi: no limit row; a motor still acts
+                break;
+        }
+        constraint_->enableMotor(i, law_.mode(dof) == DofMode::Plastic);
+        constraint_->enableSpring(i, false);
+    }
+}
+
+void BulletPlasticJoint::attach(btDynamicsWorld& world, double dt) {
+    world.addConstraint(constraint_.get(), /*disableCollisionsBetweenLinkedBodies=*/true);
+    world.addAction(this);
+    plan(dt);
+}
+
+void BulletPlasticJoint::detach(btDynamicsWorld& world) {
+    world.removeAction(this);
+    world.removeConstraint(constraint_.get());
+}
+
+PerDof<double> BulletPlasticJoint::positions() {
+    constraint_->calculateTransforms();
+    PerDof<double> x{};
+    for (int i = 0; i < 3; ++i) {
+        x[i] = constraint_->getRelativePivotPosition(i);
+        x[i + 3] = -constraint_->getAngle(i);  // Bullet's Spring2 angles turn the other way
+    }
+    return x;
+}
+
+JointAxesInWorld BulletPlasticJoint::axes_in_world() const {
+    JointAxesInWorld axes;
+    axes.anchor = to_vec3(constraint_->getCalculatedTransformB().getOrigin());
+    const btMatrix3x3& basis = constraint_->getCalculatedTransformA().getBasis();
+    for (int i = 0; i < 3; ++i) {
+        axes.translation[i] = to_vec3(basis.getColumn(i));
+        axes.rotation[i] = to_vec3(constraint_->getAxis(i));
+    }
+    return axes;
+}
+
+PerDof<double> BulletPlasticJoint::effective_masses(const JointAxesInWorld& axes) const {
+    const btVector3 lever_b = to_bt(axes.anchor) - b_.getCenterOfMassPosition();
+    const btVector3 lever_a = a_ ? constraint_->getCalculatedTransformA().getOrigin() - a_->getCenterOfMassPosition()
+                                 : btVector3(0, 0, 0);
+    PerDof<double> masses{};
+    for (std::size_t i = 0; i < 3; ++i) {
+        const btVector3 t = to_bt(axes.translation[i]);
+        const btVector3 r = to_bt(axes.rotation[i]);
+        double wt = inverse_mass_along(b_, t, &lever_b);
+        double wr = inverse_mass_along(b_, r, nullptr);
+        if (a_) {
+            wt += inverse_mass_along(*a_, t, &lever_a);
+            wr += inverse_mass_along(*a_, r, nullptr);
+        }
+        masses[i] = wt > 0.0 ? 1.0 / wt : INFINITY;
+        masses[i + 3] = wr > 0.0 ? 1.0 / wr : INFINITY;
+    }
+    return masses;
+}
+
+void BulletPlasticJoint::plan(double dt) {
+    const PerDof<double> x = positions();
+    planned_axes_ = axes_in_world();
+    planned_centre_of_b_ = to_vec3(b_.getCenterOfMassPosition());
+    apply(law_.plan(x, dt, effective_masses(planned_axes_)));
+}
+
+void BulletPlasticJoint::apply(const PerDof<std::optional<RowCommand>>& commands) {
+    for (std::size_t i = 0; i < kDofCount; ++i) {
+        if (!commands[i]) continue;
+        const int row = static_cast<int>(i);
+        const RowCommand& c = *commands[i];
+        // A motor row's velocity is −(the dof's rate) for every Spring2 axis (its Jacobian is
+        // +axis on a, −axis on b); its bound is a force (Bullet ≥ 2.83 divides it by fps).
+        if (c.kind == RowCommand::Kind::Hold) {
+            constraint_->setTargetVelocity(row, 0.0);
+            constraint_->setMaxMotorForce(row, c.bound);
+        } else {
+            constraint_->setTargetVelocity(row, c.force > 0.0 ? -kPushSpeed : kPushSpeed);
+            constraint_->setMaxMotorForce(row, std::abs(c.force));
+        }
+    }
+}
+
+void BulletPlasticJoint::updateAction(btCollisionWorld*, btScalar dt) {
+    time_ += dt;
+    if (law_.broken()) return;
+    const WorldLoad load{to_vec3(feedback_.m_appliedForceBodyB), to_vec3(feedback_.m_appliedTorqueBodyB)};
+    forces_ = joint_frame_loads(load, planned_centre_of_b_, planned_axes_);
+    if (law_.settle(positions(), forces_, time_)) {
+        constraint_->setEnabled(false);  // broken stays broken: nothing re-enables it
+        return;
+    }
+    plan(dt);
+}
+
+}  // namespace plascap

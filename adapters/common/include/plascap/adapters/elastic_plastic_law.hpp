@@ -1,0 +1,61 @@
+#pragma once
+// One dof's elastic–perfectly-plastic law, shared by every engine adapter.
+//
+// Force on body b: f = −k·(x − x_p), capped at −capacity_positive ≤ f ≤ capacity_negative, where x is
+// the dof position and x_p the plastic offset (the spring's moving equilibrium). When the elastic
+// trial force passes a capacity, x_p moves so the force equals it (return mapping; Simo & Hughes,
+// Computational Inelasticity, 1998, §1.2). Without a stiffness (or past eq. 3.2) every motion is
+// plastic: x_p follows x. The work the dof absorbs is the dissipated energy.
+#include <optional>
+
+#include "plascap/adapters/regime.hpp"
+#include "plascap/adapters/row_command.hpp"
+
+namespace plascap {
+
+struct DofLaw {
+    double capacity_positive = 0.0;    // resists positive motion of b (N, Mx, Mz: tension side) [N | N·m]
+    double capacity_negative = 0.0;    // resists negative motion (N_neg, Mx_neg, Mz_neg)      [N | N·m]
+    std::optional<double> stiffness;   // k [N/m | N·m/rad]; none = rigid-plastic
+};
+
+// Throws InputError naming `where` unless the capacities are positive and finite and the
+// stiffness, if any, is positive and finite.
+void validate_dof_law(const DofLaw& law, const char* where);
+
+class ElasticPlasticLaw {
+public:
+    explicit ElasticPlasticLaw(const DofLaw& law);
+
+    // Before a step: the row command from the current position, the step and the row's effective
+    // mass (for eq. 3.2).
+    RowCommand plan(double position, double dt, double effective_mass);
+
+    // After the step: the new position and the force the row applied (generalised, on b).
+    void settle(double position, double applied_force);
+
+    const DofLaw& law() const { return law_; }
+    Regime regime() const { return regime_; }
+    double omega_dt() const { return omega_dt_; }
+    double plastic_offset() const { return plastic_offset_; }
+    double accumulated_plastic() const { return accumulated_; }  // Σ|Δx_p| [m | rad]
+    double dissipated() const { return dissipated_; }            // [J]
+    // ½·k·(x − x_p)² in the elastic regime, else 0 [J].
+    double elastic_energy(double position) const;
+
+private:
+    double hold_bound() const;
+    void settle_rigid_plastic(double position, double applied_force);
+    void settle_elastic_plastic(double position);
+
+    DofLaw law_;
+    Regime regime_;
+    double omega_dt_ = 0.0;
+    double planned_position_ = 0.0;
+    double plastic_offset_ = 0.0;
+    double accumulated_ = 0.0;
+    double dissipated_ = 0.0;
+    double last_force_ = 0.0;
+};
+
+}  // namespace plascap

@@ -1,0 +1,28 @@
+#pragma once
+// Engines report a joint's action on a body in the world frame, with the torque about the body's
+// centre of mass (Bullet's btJointFeedback, ODE's dJointFeedback). The plastic law needs it per dof
+// of the joint frame, with moments about the joint's anchor.
+#include <array>
+
+#include "plascap/adapters/dof.hpp"
+
+namespace plascap {
+
+using Vec3 = std::array<double, 3>;
+
+struct WorldLoad {
+    Vec3 force{};             // on body b, world frame [N]
+    Vec3 torque_about_com{};  // on body b about its centre of mass, world frame [N·m]
+};
+
+struct JointAxesInWorld {
+    Vec3 anchor{};                      // where the joint acts on b [m]
+    std::array<Vec3, 3> translation{};  // unit axes of the Qx, N, Qz rows
+    std::array<Vec3, 3> rotation{};     // unit axes of the Mx, My, Mz rows
+};
+
+// Generalised forces on b per dof: F·e_i for translations and (T − r × F)·e_i for rotations,
+// r = anchor − centre of mass (moment transfer; any statics text, e.g. Meriam & Kraige §2/6).
+PerDof<double> joint_frame_loads(const WorldLoad& load, const Vec3& centre_of_mass, const JointAxesInWorld& axes);
+
+}  // namespace plascap

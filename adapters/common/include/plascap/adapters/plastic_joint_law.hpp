@@ -1,0 +1,46 @@
+#pragma once
+// The joint-level law: six dof laws, the breaking rule, and the totals reports need. Engine
+// adapters call plan() before each step and settle() after it; nothing here knows an engine.
+#include <optional>
+
+#include "plascap/adapters/dof.hpp"
+#include "plascap/adapters/elastic_plastic_law.hpp"
+#include "plascap/adapters/plastic_joint_settings.hpp"
+
+namespace plascap {
+
+class PlasticJointLaw {
+public:
+    explicit PlasticJointLaw(const PlasticJointSettings& settings);
+
+    // Row commands for the plastic dofs (empty for free and rigid ones), from the dof positions,
+    // the step and each row's effective mass.
+    PerDof<std::optional<RowCommand>> plan(const PerDof<double>& positions, double dt,
+                                           const PerDof<double>& effective_masses);
+
+    // After a step that ended at `time`: the new positions and the generalised forces the rows
+    // applied to body b. Returns true when the joint broke in this step. A broken joint ignores
+    // further calls: broken stays broken.
+    bool settle(const PerDof<double>& positions, const PerDof<double>& forces, double time);
+
+    DofMode mode(Dof dof) const { return settings_.modes[index(dof)]; }
+    // The law of a plastic dof; nullptr for free and rigid ones.
+    const ElasticPlasticLaw* law(Dof dof) const;
+
+    bool broken() const { return broken_at_.has_value(); }
+    std::optional<double> broken_at() const { return broken_at_; }
+    double plastic_displacement() const;  // Σ over translations of Σ|Δx_p| [m]
+    double plastic_rotation() const;      // Σ over rotations [rad]
+    double dissipated() const;            // [J]
+    double elastic_energy(const PerDof<double>& positions) const;  // [J]
+    const PlasticJointSettings& settings() const { return settings_; }
+
+private:
+    double accumulated(bool rotations) const;
+
+    PlasticJointSettings settings_;
+    PerDof<std::optional<ElasticPlasticLaw>> laws_;
+    std::optional<double> broken_at_;
+};
+
+}  // namespace plascap

@@ -1,0 +1,34 @@
+#pragma once
+// The description of one plastic joint, independent of any engine (a plain settings struct, in the
+// manner of Jolt's SixDOFConstraintSettings): what each dof does, its law, and the breaking limits.
+#include <limits>
+#include <optional>
+#include <string>
+
+#include "plascap/adapters/dof.hpp"
+#include "plascap/adapters/elastic_plastic_law.hpp"
+#include "plascap/sections/capacities.hpp"
+#include "plascap/sections/joint_stiffness.hpp"
+
+namespace plascap {
+
+struct PlasticJointSettings {
+    PerDof<DofMode> modes{};  // all Free: declare what the scene needs
+    PerDof<DofLaw> laws{};    // read for Plastic dofs only
+    // The joint breaks when the accumulated plastic translation (Σ over Qx, N, Qz of Σ|Δx_p|) or
+    // rotation (Σ over Mx, My, Mz) exceeds its limit.
+    double max_plastic_displacement = std::numeric_limits<double>::infinity();  // [m]
+    double max_plastic_rotation = std::numeric_limits<double>::infinity();      // [rad]
+};
+
+// Throws InputError naming `where` and the dof for a bad law of a plastic dof or a non-positive limit.
+void validate_joint_settings(const PlasticJointSettings& settings, const std::string& where);
+
+// The capacity of each dof from a section's capacities (both signs; see capacities.hpp for which
+// rotation puts which side in tension): Qx, Qz, My act alike both ways; N resists positive motion
+// (elongation when the joint's y axis points from a to b) with N and negative with N_neg; Mx and Mz
+// with Mx, Mz one way and Mx_neg, Mz_neg the other. Stiffness from the beam segment, if given.
+// Throws InputError if a capacity the dof needs is missing or zero.
+DofLaw dof_law_from_section(Dof dof, const Capacities& capacities, const std::optional<JointStiffness>& stiffness);
+
+}  // namespace plascap

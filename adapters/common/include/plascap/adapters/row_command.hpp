@@ -1,0 +1,19 @@
+#pragma once
+// What a plastic dof's constraint row must do during the next step, in engine-neutral terms.
+// Forces are generalised forces on body b in the dof's positive direction [N or N·m].
+namespace plascap {
+
+struct RowCommand {
+    enum class Kind {
+        // Rigid-plastic (paper §2, "target velocity 0, impulse bounded by capacity × dt"): drive the
+        // dof's velocity to zero using at most `bound` in either direction.
+        Hold,
+        // Elastic-plastic: apply exactly `force` (the capped spring force) this step.
+        Push,
+    };
+    Kind kind = Kind::Hold;
+    double bound = 0.0;  // Hold: largest force magnitude, ≥ 0
+    double force = 0.0;  // Push: signed force, |force| ≤ the capacity on its side
+};
+
+}  // namespace plascap

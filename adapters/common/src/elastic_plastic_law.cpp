@@ -1,0 +1,94 @@
+#include "plascap/adapters/elastic_plastic_law.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "plascap/input_error.hpp"
+
+namespace plascap {
+namespace {
+
+bool positive_finite(double value) { return value > 0.0 && std::isfinite(value); }
+
+}  // namespace
+
+void validate_dof_law(const DofLaw& law, const char* where) {
+    if (!positive_finite(law.capacity_positive) || !positive_finite(law.capacity_negative)) {
+        throw InputError(std::string(where) + ": capacities must be positive and finite (got " +
+                         std::to_string(law.capacity_positive) + " and " + std::to_string(law.capacity_negative) + ")");
+    }
+    if (law.stiffness && !positive_finite(*law.stiffness)) {
+        throw InputError(std::string(where) + ": stiffness must be positive and finite (got " +
+                         std::to_string(*law.stiffness) + ")");
+    }
+}
+
+ElasticPlasticLaw::ElasticPlasticLaw(const DofLaw& law)
+    : law_(law), regime_(law.stiffness ? Regime::ElasticPlastic : Regime::RigidPlastic) {}
+
+RowCommand ElasticPlasticLaw::plan(double position, double dt, double effective_mass) {
+    planned_position_ = position;
+    regime_ = choose_regime(law_.stiffness, effective_mass, dt);
+    omega_dt_ = spring_omega_dt(law_.stiffness, effective_mass, dt);
+    if (regime_ != Regime::ElasticPlastic) {
+        // Paper §2: target velocity 0, force bounded by the capacity.
+        return RowCommand{RowCommand::Kind::Hold, hold_bound(), 0.0};
+    }
+    // Explicit spring force from the start-of-step position, capped at the capacities.
+    const double spring = -*law_.stiffness * (position - plastic_offset_);
+    const double force = std::clamp(spring, -law_.capacity_positive, law_.capacity_negative);
+    return RowCommand{RowCommand::Kind::Push, 0.0, force};
+}
+
+double ElasticPlasticLaw::hold_bound() const {
+    // A row's bound is symmetric, so take the capacity on the side the dof was last loaded; before
+    // any load, the smaller one.
+    if (last_force_ < 0.0) return law_.capacity_positive;
+    if (last_force_ > 0.0) return law_.capacity_negative;
+    return std::min(law_.capacity_positive, law_.capacity_negative);
+}
+
+void ElasticPlasticLaw::settle(double position, double applied_force) {
+    if (regime_ == Regime::ElasticPlastic) {
+        settle_elastic_plastic(position);
+    } else {
+        settle_rigid_plastic(position, applied_force);
+    }
+    last_force_ = applied_force;
+}
+
+void ElasticPlasticLaw::settle_rigid_plastic(double position, double applied_force) {
+    // Every motion is plastic; the row's work on it, −f·Δx, is absorbed.
+    const double step = position - planned_position_;
+    plastic_offset_ += step;
+    accumulated_ += std::abs(step);
+    dissipated_ += -applied_force * step;
+}
+
+void ElasticPlasticLaw::settle_elastic_plastic(double position) {
+    // Return mapping: move x_p until the elastic force is back on the capacity it passed.
+    const double k = *law_.stiffness;
+    const double trial = -k * (position - plastic_offset_);
+    double moved_to = plastic_offset_;
+    double capacity = 0.0;
+    if (trial < -law_.capacity_positive) {
+        moved_to = position - law_.capacity_positive / k;
+        capacity = law_.capacity_positive;
+    } else if (trial > law_.capacity_negative) {
+        moved_to = position + law_.capacity_negative / k;
+        capacity = law_.capacity_negative;
+    }
+    const double step = std::abs(moved_to - plastic_offset_);
+    accumulated_ += step;
+    dissipated_ += capacity * step;  // the force stays on the capacity while x_p moves
+    plastic_offset_ = moved_to;
+}
+
+double ElasticPlasticLaw::elastic_energy(double position) const {
+    if (regime_ != Regime::ElasticPlastic) return 0.0;
+    const double stretch = position - plastic_offset_;
+    return 0.5 * *law_.stiffness * stretch * stretch;
+}
+
+}  // namespace plascap

@@ -1,0 +1,66 @@
+#include "plascap/adapters/plastic_joint_law.hpp"
+
+namespace plascap {
+
+PlasticJointLaw::PlasticJointLaw(const PlasticJointSettings& settings) : settings_(settings) {
+    validate_joint_settings(settings, "plastic joint");
+    for (Dof dof : kAllDofs) {
+        if (mode(dof) == DofMode::Plastic) laws_[index(dof)].emplace(settings.laws[index(dof)]);
+    }
+}
+
+const ElasticPlasticLaw* PlasticJointLaw::law(Dof dof) const {
+    const auto& law = laws_[index(dof)];
+    return law ? &*law : nullptr;
+}
+
+PerDof<std::optional<RowCommand>> PlasticJointLaw::plan(const PerDof<double>& positions, double dt,
+                                                        const PerDof<double>& effective_masses) {
+    PerDof<std::optional<RowCommand>> commands;
+    for (std::size_t i = 0; i < kDofCount; ++i) {
+        if (laws_[i]) commands[i] = laws_[i]->plan(positions[i], dt, effective_masses[i]);
+    }
+    return commands;
+}
+
+bool PlasticJointLaw::settle(const PerDof<double>& positions, const PerDof<double>& forces, double time) {
+    if (broken()) return false;
+    for (std::size_t i = 0; i < kDofCount; ++i) {
+        if (laws_[i]) laws_[i]->settle(positions[i], forces[i]);
+    }
+    if (plastic_displacement() > settings_.max_plastic_displacement ||
+        plastic_rotation() > settings_.max_plastic_rotation) {
+        broken_at_ = time;
+        return true;
+    }
+    return false;
+}
+
+double PlasticJointLaw::accumulated(bool rotations) const {
+    double sum = 0.0;
+    for (Dof dof : kAllDofs) {
+        if (is_rotation(dof) == rotations && laws_[index(dof)]) sum += laws_[index(dof)]->accumulated_plastic();
+    }
+    return sum;
+}
+
+double PlasticJointLaw::plastic_displacement() const { return accumulated(false); }
+double PlasticJointLaw::plastic_rotation() const { return accumulated(true); }
+
+double PlasticJointLaw::dissipated() const {
+    double sum = 0.0;
+    for (const auto& law : laws_) {
+        if (law) sum += law->dissipated();
+    }
+    return sum;
+}
+
+double PlasticJointLaw::elastic_energy(const PerDof<double>& positions) const {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < kDofCount; ++i) {
+        if (laws_[i]) sum += laws_[i]->elastic_energy(positions[i]);
+    }
+    return sum;
+}
+
+}  // namespace plascap

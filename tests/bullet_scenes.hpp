@@ -1,0 +1,39 @@
+#pragma once
+// Small Bullet set-ups shared by the adapter tests: a block hanging from the world on a plastic
+// joint whose N dof is plastic (the others rigid), and a rod cantilevered from the world whose Mz dof
+// is plastic. `turn` rotates the whole set-up (gravity, body, joint frame) for the invariance tests.
+#include <vector>
+
+#include "plascap/adapters/bullet_plastic_joint.hpp"
+#include "plascap/adapters/bullet_world.hpp"
+
+namespace plascap::test {
+
+struct Trace {
+    std::vector<double> time, position, force, plastic, dissipated, elastic, energy;
+    std::vector<double> body_y;  // the body's centre along the turned "up" axis
+    double broken_at = -1.0;
+};
+
+struct HangingBlock {
+    double mass = 1.0, g = 10.0, capacity = 20.0, dt = 0.01;
+    std::optional<double> stiffness;
+    double max_plastic_displacement = INFINITY;
+    int iterations = 10, steps = 300, engage_after_steps = 0;
+    btQuaternion turn = btQuaternion::getIdentity();
+};
+
+struct Cantilever {
+    double mass = 2.0, length = 1.0, thickness = 0.05, g = 10.0, capacity = 20.0, dt = 0.01;
+    std::optional<double> stiffness;
+    int iterations = 20, steps = 300;
+    btQuaternion turn = btQuaternion::getIdentity();
+    double inertia_about_anchor() const {
+        return mass * (length * length + thickness * thickness) / 12.0 + mass * length * length / 4.0;
+    }
+};
+
+Trace run(const HangingBlock& scene);
+Trace run(const Cantilever& scene);
+
+}  // namespace plascap::test
