@@ -13,6 +13,7 @@
 #include "material_listing.hpp"
 #include "section_svg.hpp"
 #include "plascap/input_error.hpp"
+#include "tool_main.hpp"
 #include "plascap/materials/catalogue.hpp"
 #include "plascap/sections/capacities.hpp"
 #include "plascap/sections/cubature.hpp"
@@ -210,21 +211,5 @@ int main(int argc, char** argv) {
     CLI::App app{"section-calc: plastic capacities N, Qx, Qz, Mx, Mz, My of a polygon cross section"};
     Options options;
     add_options(app, options);
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::Success& e) {
-        return app.exit(e);  // --help, --version
-    } catch (const CLI::ParseError& e) {
-        std::cerr << "section-calc: error: " << e.what() << " (see --help)\n";
-        return 2;
-    }
-    try {
-        return run(options);
-    } catch (const plascap::InputError& e) {
-        std::cerr << "section-calc: error: " << e.what() << "\n";
-        return 2;
-    } catch (const std::exception& e) {
-        std::cerr << "section-calc: internal error: " << e.what() << "\n";
-        return 1;
-    }
+    return plascap::tool_main("section-calc", app, argc, argv, [&] { return run(options); });
 }

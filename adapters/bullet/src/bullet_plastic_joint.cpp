@@ -57,7 +57,8 @@ void BulletPlasticJoint::set_up_rows() {
     }
 }
 
-void BulletPlasticJoint::attach(btDynamicsWorld& world, double dt) {
+void BulletPlasticJoint::attach(btDynamicsWorld& world, double dt, double now) {
+    time_ = now;
     world.addConstraint(constraint_.get(), /*disableCollisionsBetweenLinkedBodies=*/true);
     world.addAction(this);
     plan(dt);

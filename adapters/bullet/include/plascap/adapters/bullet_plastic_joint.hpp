@@ -25,8 +25,8 @@ public:
     BulletPlasticJoint& operator=(const BulletPlasticJoint&) = delete;
 
     // Adds the constraint (collisions between a and b disabled) and this action to `world` and
-    // plans the first step of length dt. Call once, before stepping.
-    void attach(btDynamicsWorld& world, double dt);
+    // plans the first step of length dt; `now` is the world's time [s], for broken_at. Call once.
+    void attach(btDynamicsWorld& world, double dt, double now = 0.0);
     void detach(btDynamicsWorld& world);
 
     void updateAction(btCollisionWorld* world, btScalar dt) override;

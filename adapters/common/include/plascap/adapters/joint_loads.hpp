@@ -5,10 +5,9 @@
 #include <array>
 
 #include "plascap/adapters/dof.hpp"
+#include "plascap/adapters/vec3.hpp"
 
 namespace plascap {
-
-using Vec3 = std::array<double, 3>;
 
 struct WorldLoad {
     Vec3 force{};             // on body b, world frame [N]

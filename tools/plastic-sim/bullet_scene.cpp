@@ -1,0 +1,91 @@
+// A Scene in Bullet: boxes as btRigidBody, joints as BulletPlasticJoint.
+#include <memory>
+#include <vector>
+
+#include "plascap/adapters/bullet_plastic_joint.hpp"
+#include "plascap/adapters/bullet_world.hpp"
+#include "scene_engine.hpp"
+
+namespace plascap {
+namespace {
+
+btVector3 bt(const Vec3& v) { return btVector3(v[0], v[1], v[2]); }
+Vec3 vec(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
+
+btTransform joint_frame(const SceneJoint& joint) {
+    const auto& [x, y, z] = joint.axes;
+    const btMatrix3x3 basis(x[0], y[0], z[0], x[1], y[1], z[1], x[2], y[2], z[2]);  // columns x, y, z
+    return btTransform(basis, bt(joint.anchor));
+}
+
+class BulletScene : public SceneEngine {
+public:
+    explicit BulletScene(const Scene& scene) : scene_(scene), world_(bt(scene.gravity), scene.iterations) {
+        for (const SceneBody& b : scene.bodies) {
+            const btQuaternion q(b.orientation[1], b.orientation[2], b.orientation[3], b.orientation[0]);
+            boxes_.push_back(std::make_unique<BulletBox>(bt(b.size) * 0.5, b.is_static ? 0.0 : b.mass,
+                                                         btTransform(q, bt(b.position))));
+            btRigidBody& body = boxes_.back()->body();
+            body.setLinearVelocity(bt(b.velocity));
+            body.setAngularVelocity(bt(b.angular_velocity));
+            world_.world().addRigidBody(&body);
+        }
+        for (const SceneJoint& j : scene.joints) {
+            btRigidBody* a = j.a ? &boxes_[*j.a]->body() : nullptr;
+            joints_.push_back(std::make_unique<BulletPlasticJoint>(a, boxes_[j.b]->body(), joint_frame(j), j.settings));
+            engaged_.push_back(false);
+        }
+    }
+
+    ~BulletScene() override {
+        for (std::size_t i = 0; i < joints_.size(); ++i) {
+            if (engaged_[i]) joints_[i]->detach(world_.world());
+        }
+        for (auto& box : boxes_) world_.world().removeRigidBody(&box->body());
+    }
+
+    std::string description() const override {
+        return std::string("Bullet ") + std::to_string(btGetVersion() / 100) + "." + std::to_string(btGetVersion() % 100) +
+               (sizeof(btScalar) == 8 ? ", double precision" : ", single precision");
+    }
+
+    void step() override {
+        for (std::size_t i = 0; i < joints_.size(); ++i) {
+            if (!engaged_[i] && scene_.joints[i].engage_at < time_ + 0.5 * scene_.dt) {
+                joints_[i]->attach(world_.world(), scene_.dt, time_);
+                engaged_[i] = true;
+            }
+        }
+        world_.step(scene_.dt);
+        ++steps_;
+        time_ = static_cast<double>(steps_) * scene_.dt;
+    }
+
+    double time() const override { return time_; }
+
+    BodyState body(std::size_t index) const override {
+        const btRigidBody& b = boxes_[index]->body();
+        return {vec(b.getCenterOfMassPosition()), vec(b.getLinearVelocity()), vec(b.getAngularVelocity())};
+    }
+
+    const PlasticJointLaw* joint_law(std::size_t index) const override {
+        return engaged_[index] ? &joints_[index]->law() : nullptr;
+    }
+
+    PerDof<double> joint_forces(std::size_t index) const override { return joints_[index]->forces(); }
+
+private:
+    const Scene& scene_;
+    BulletWorld world_;
+    std::vector<std::unique_ptr<BulletBox>> boxes_;
+    std::vector<std::unique_ptr<BulletPlasticJoint>> joints_;
+    std::vector<bool> engaged_;
+    std::size_t steps_ = 0;
+    double time_ = 0.0;
+};
+
+}  // namespace
+
+std::unique_ptr<SceneEngine> make_bullet_scene(const Scene& scene) { return std::make_unique<BulletScene>(scene); }
+
+}  // namespace plascap

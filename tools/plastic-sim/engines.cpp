@@ -1,0 +1,30 @@
+#include "plascap/input_error.hpp"
+#include "scene_engine.hpp"
+
+namespace plascap {
+
+#ifdef PLASCAP_HAVE_BULLET
+std::unique_ptr<SceneEngine> make_bullet_scene(const Scene& scene);
+#endif
+
+std::vector<std::string> available_engines() {
+    std::vector<std::string> names;
+#ifdef PLASCAP_HAVE_BULLET
+    names.push_back("bullet");
+#endif
+    return names;
+}
+
+std::unique_ptr<SceneEngine> make_engine(const std::string& name, const Scene& scene) {
+#ifdef PLASCAP_HAVE_BULLET
+    if (name == "bullet") return make_bullet_scene(scene);
+#endif
+    std::string list;
+    for (const std::string& n : available_engines()) list += (list.empty() ? "" : ", ") + n;
+    if (name == "bullet" || name == "ode") {
+        throw InputError("--engine " + name + ": this build has no " + name + " adapter (it has: " + list + ")");
+    }
+    throw InputError("--engine " + name + ": unknown engine (this build has: " + list + ")");
+}
+
+}  // namespace plascap

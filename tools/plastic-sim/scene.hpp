@@ -1,0 +1,55 @@
+#pragma once
+// A plastic-sim scene: rigid boxes joined to each other or to the world by plastic joints. The JSON
+// form is documented in docs/scenes.md; parse_scene_json() checks everything an engine would
+// otherwise crash on or silently mis-simulate.
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "plascap/adapters/vec3.hpp"
+#include "plascap/adapters/plastic_joint_settings.hpp"
+#include "plascap/materials/catalogue.hpp"
+
+namespace plascap {
+
+using Quaternion = std::array<double, 4>;  // w, x, y, z; unit length
+
+struct SceneBody {
+    std::string name;
+    Vec3 size{};          // full box edges along the body's x, y, z [m]
+    double mass = 0.0;         // [kg]; static bodies keep theirs for reports only
+    Vec3 position{};      // centre [m]
+    Quaternion orientation{1, 0, 0, 0};
+    Vec3 velocity{};          // initial [m/s]
+    Vec3 angular_velocity{};  // initial [rad/s]
+    bool is_static = false;
+};
+
+struct SceneJoint {
+    std::string name;
+    std::optional<std::size_t> a;  // index into Scene::bodies; empty = the world
+    std::size_t b = 0;
+    Vec3 anchor{};             // [m], world
+    std::array<Vec3, 3> axes{};  // joint x, y (beam axis), z in world: orthonormal, right-handed
+    PlasticJointSettings settings;
+    double engage_at = 0.0;  // [s]: the joint joins the world at the step starting nearest this time
+};
+
+struct Scene {
+    double dt = 1.0 / 60;       // [s]
+    double duration = 1.0;      // [s]
+    int iterations = 10;        // solver iterations per step
+    Vec3 gravity{0, -9.81, 0};
+    std::vector<SceneBody> bodies;
+    std::vector<SceneJoint> joints;
+
+    std::size_t steps() const;  // duration/dt, rounded to the nearest whole step (at least 1)
+};
+
+// Every problem throws InputError naming where it is, e.g. "joints[1] (\"hinge\").axis: ...".
+Scene parse_scene_json(std::string_view text, const MaterialCatalogue& catalogue = MaterialCatalogue::built_in());
+Scene read_scene_file(const std::string& path, const MaterialCatalogue& catalogue = MaterialCatalogue::built_in());
+
+}  // namespace plascap

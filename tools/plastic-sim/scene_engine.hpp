@@ -1,0 +1,40 @@
+#pragma once
+// What plastic-sim needs from a physics engine running a Scene; one implementation per engine
+// (bullet_scene.cpp; ODE arrives with its issue). Everything engine-neutral (reading the scene,
+// the run loop, reports) stays out of the implementations.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "plascap/adapters/plastic_joint_law.hpp"
+#include "plascap/adapters/vec3.hpp"
+#include "scene.hpp"
+
+namespace plascap {
+
+struct BodyState {
+    Vec3 position{};          // centre of mass [m]
+    Vec3 velocity{};          // [m/s]
+    Vec3 angular_velocity{};  // [rad/s]
+};
+
+class SceneEngine {
+public:
+    virtual ~SceneEngine() = default;
+    virtual std::string description() const = 0;  // e.g. "Bullet 3.24, double precision"
+    // Engages the joints whose time has come, then advances the world by the scene's dt.
+    virtual void step() = 0;
+    virtual double time() const = 0;
+    virtual BodyState body(std::size_t index) const = 0;
+    // nullptr until the joint engages.
+    virtual const PlasticJointLaw* joint_law(std::size_t index) const = 0;
+    // The generalised forces the joint's rows applied to its body b in the last step [N, N·m].
+    virtual PerDof<double> joint_forces(std::size_t index) const = 0;
+};
+
+// The engines this build has, by --engine name.
+std::vector<std::string> available_engines();
+// Throws InputError for an unknown engine or one this build lacks.
+std::unique_ptr<SceneEngine> make_engine(const std::string& name, const Scene& scene);
+
+}  // namespace plascap

@@ -1,0 +1,56 @@
+#include "simulation.hpp"
+
+#include <chrono>
+#include <ostream>
+
+#include "trace_csv.hpp"
+
+namespace plascap {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+JointSummary summarise(const PlasticJointLaw* law) {
+    JointSummary s;
+    if (!law) return s;
+    s.engaged = true;
+    s.broken_at = law->broken_at();
+    s.plastic_displacement = law->plastic_displacement();
+    s.plastic_rotation = law->plastic_rotation();
+    s.dissipated = law->dissipated();
+    for (Dof dof : kAllDofs) {
+        if (const ElasticPlasticLaw* dof_law = law->law(dof)) {
+            s.regimes[index(dof)] = dof_law->regime();
+            s.omega_dt[index(dof)] = dof_law->omega_dt();
+        }
+    }
+    return s;
+}
+
+}  // namespace
+
+SimulationResult run_simulation(const Scene& scene, SceneEngine& engine, const SimulationOptions& options) {
+    const Clock::time_point start = Clock::now();
+    double next_report = 2.0;  // [s of wall time]
+    SimulationResult result;
+    result.steps = scene.steps();
+    if (options.trace_csv) write_trace_header(*options.trace_csv, scene);
+    for (std::size_t i = 0; i < result.steps; ++i) {
+        engine.step();
+        if (options.trace_csv) write_trace_row(*options.trace_csv, scene, engine);
+        if (options.progress && seconds_since(start) >= next_report) {
+            next_report += 2.0;
+            *options.progress << "plastic-sim: step " << i + 1 << " of " << result.steps << " (t = " << engine.time()
+                              << " s, " << (100 * (i + 1)) / result.steps << " %)" << std::endl;
+        }
+    }
+    result.time = engine.time();
+    result.wall_seconds = seconds_since(start);
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i) result.bodies.push_back(engine.body(i));
+    for (std::size_t j = 0; j < scene.joints.size(); ++j) result.joints.push_back(summarise(engine.joint_law(j)));
+    return result;
+}
+
+}  // namespace plascap

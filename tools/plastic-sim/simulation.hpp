@@ -1,0 +1,42 @@
+#pragma once
+// The engine-neutral run loop of plastic-sim: steps a SceneEngine through the scene, writes the
+// per-step trace, reports progress on long runs, and returns the end state.
+#include <iosfwd>
+#include <vector>
+
+#include "scene_engine.hpp"
+
+namespace plascap {
+
+struct JointSummary {
+    bool engaged = false;
+    std::optional<double> broken_at;  // [s]
+    double plastic_displacement = 0.0;  // [m]
+    double plastic_rotation = 0.0;      // [rad]
+    double dissipated = 0.0;            // [J]
+    PerDof<std::optional<Regime>> regimes;  // plastic dofs: the regime of the last step
+    PerDof<double> omega_dt{};              // plastic dofs with a spring: ω·dt (eq. 3.2)
+};
+
+struct SimulationResult {
+    double time = 0.0;
+    std::size_t steps = 0;
+    double wall_seconds = 0.0;
+    std::vector<BodyState> bodies;
+    std::vector<JointSummary> joints;
+};
+
+struct SimulationOptions {
+    std::ostream* trace_csv = nullptr;  // one row per step when set
+    std::ostream* progress = nullptr;   // a line every ~2 s of wall time when set
+};
+
+SimulationResult run_simulation(const Scene& scene, SceneEngine& engine, const SimulationOptions& options);
+
+// The end state as the JSON summary of the issue: {"time", "bodies": {NAME: {"position",
+// "velocity"}}, "joints": {NAME: {"broken", "broken_at", "plastic_displacement",
+// "plastic_rotation", "dissipated", ...}}}.
+void write_json_summary(std::ostream& out, const Scene& scene, const SimulationResult& result, const std::string& engine);
+void write_text_summary(std::ostream& out, const Scene& scene, const SimulationResult& result, const std::string& engine);
+
+}  // namespace plascap

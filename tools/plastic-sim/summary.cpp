@@ -1,0 +1,103 @@
+// The end-of-run summaries: JSON (--json) and a readable table.
+#include <nlohmann/json.hpp>
+
+#include <iomanip>
+#include <ostream>
+#include <sstream>
+
+#include "simulation.hpp"
+
+namespace plascap {
+namespace {
+
+nlohmann::json regimes_json(const SceneJoint& joint, const JointSummary& s) {
+    nlohmann::json dofs = nlohmann::json::object();
+    for (Dof dof : kAllDofs) {
+        const DofMode mode = joint.settings.modes[index(dof)];
+        if (mode == DofMode::Free) continue;
+        nlohmann::json d = {{"mode", dof_mode_name(mode)}};
+        if (s.regimes[index(dof)]) {
+            d["regime"] = regime_name(*s.regimes[index(dof)]);
+            if (joint.settings.laws[index(dof)].stiffness) d["omega_dt"] = s.omega_dt[index(dof)];
+        }
+        dofs[dof_name(dof)] = d;
+    }
+    return dofs;
+}
+
+std::string regimes_text(const SceneJoint& joint, const JointSummary& s) {
+    std::ostringstream out;
+    for (Dof dof : kAllDofs) {
+        const DofMode mode = joint.settings.modes[index(dof)];
+        if (mode == DofMode::Free) continue;
+        out << ' ' << dof_name(dof) << ':';
+        if (!s.regimes[index(dof)]) {
+            out << dof_mode_name(mode);
+            continue;
+        }
+        out << regime_name(*s.regimes[index(dof)]);
+        if (joint.settings.laws[index(dof)].stiffness) out << " (ω·dt " << std::setprecision(3) << s.omega_dt[index(dof)] << ')';
+    }
+    return out.str();
+}
+
+}  // namespace
+
+void write_json_summary(std::ostream& out, const Scene& scene, const SimulationResult& r, const std::string& engine) {
+    nlohmann::json j;
+    j["time"] = r.time;
+    j["steps"] = r.steps;
+    j["engine"] = engine;
+    j["wall_seconds"] = r.wall_seconds;
+    j["bodies"] = nlohmann::json::object();
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+        j["bodies"][scene.bodies[i].name] = {{"position", r.bodies[i].position}, {"velocity", r.bodies[i].velocity},
+                                             {"angular_velocity", r.bodies[i].angular_velocity}};
+    }
+    j["joints"] = nlohmann::json::object();
+    for (std::size_t k = 0; k < scene.joints.size(); ++k) {
+        const JointSummary& s = r.joints[k];
+        j["joints"][scene.joints[k].name] = {
+            {"engaged", s.engaged},
+            {"broken", s.broken_at.has_value()},
+            {"broken_at", s.broken_at ? nlohmann::json(*s.broken_at) : nlohmann::json(nullptr)},
+            {"plastic_displacement", s.plastic_displacement},
+            {"plastic_rotation", s.plastic_rotation},
+            {"dissipated", s.dissipated},
+            {"dofs", regimes_json(scene.joints[k], s)}};
+    }
+    out << j.dump(2) << '\n';
+}
+
+void write_text_summary(std::ostream& out, const Scene& scene, const SimulationResult& r, const std::string& engine) {
+    out << "engine: " << engine << "\n";
+    out << "time: " << r.time << " s in " << r.steps << " steps of " << scene.dt << " s (" << std::fixed
+        << std::setprecision(3) << r.wall_seconds << " s of wall time)\n"
+        << std::defaultfloat;
+    out << "\nbodies                position [m]                              velocity [m/s]\n";
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+        out << "  " << std::left << std::setw(18) << scene.bodies[i].name << std::right;
+        for (double v : r.bodies[i].position) out << std::setw(13) << std::setprecision(6) << v;
+        out << "  ";
+        for (double v : r.bodies[i].velocity) out << std::setw(13) << std::setprecision(6) << v;
+        out << '\n';
+    }
+    if (scene.joints.empty()) return;
+    out << "\njoints                state               plastic [m]  plastic [rad]  dissipated [J]  dofs\n";
+    for (std::size_t k = 0; k < scene.joints.size(); ++k) {
+        const JointSummary& s = r.joints[k];
+        std::ostringstream state;
+        if (!s.engaged) {
+            state << "not engaged";
+        } else if (s.broken_at) {
+            state << "broken at " << std::setprecision(4) << *s.broken_at << " s";
+        } else {
+            state << "intact";
+        }
+        out << "  " << std::left << std::setw(18) << scene.joints[k].name << "  " << std::setw(18) << state.str()
+            << std::right << std::setw(13) << std::setprecision(5) << s.plastic_displacement << std::setw(15)
+            << s.plastic_rotation << std::setw(16) << s.dissipated << ' ' << regimes_text(scene.joints[k], s) << '\n';
+    }
+}
+
+}  // namespace plascap

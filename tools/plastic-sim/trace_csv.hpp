@@ -1,0 +1,13 @@
+#pragma once
+// The per-step CSV trace: time; each body's position and velocity; each joint's force and plastic
+// offset per plastic dof, accumulated plastic displacement and rotation, dissipated energy, broken.
+#include <iosfwd>
+
+#include "scene_engine.hpp"
+
+namespace plascap {
+
+void write_trace_header(std::ostream& out, const Scene& scene);
+void write_trace_row(std::ostream& out, const Scene& scene, const SceneEngine& engine);
+
+}  // namespace plascap
