@@ -7,33 +7,15 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
-#include <sys/wait.h>
-#include <unistd.h>
+#include "cli_run.hpp"
 
 namespace {
 
-struct CliRun {
-    int exit_code;
-    std::string out;
-    std::string err;
-};
+using plascap::test::CliRun;
 
 const std::string kSource = PLASCAP_SOURCE_DIR;
 
-CliRun section_calc(const std::string& arguments) {
-    // One stderr file per process: ctest runs the test cases in parallel.
-    const std::string err_file = ::testing::TempDir() + "section_calc_stderr_" + std::to_string(getpid()) + ".txt";
-    const std::string command = std::string("\"") + PLASCAP_SECTION_CALC + "\" " + arguments + " 2>\"" + err_file + "\"";
-    FILE* pipe = popen(command.c_str(), "r");
-    std::string out;
-    char buffer[4096];
-    while (std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) out.append(buffer, n);
-    const int status = pclose(pipe);
-    std::stringstream err;
-    err << std::ifstream(err_file).rdbuf();
-    std::remove(err_file.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out, err.str()};
-}
+CliRun section_calc(const std::string& arguments) { return plascap::test::run_tool(PLASCAP_SECTION_CALC, arguments); }
 
 std::string example(const std::string& name) { return kSource + "/sections/examples/" + name; }
 

@@ -103,7 +103,7 @@ Scene parse_scene_json(std::string_view text, const MaterialCatalogue& catalogue
     Json j;
     try {
         j = Json::parse(text);
-    } catch (const Json::parse_error& e) {
+    } catch (const Json::exception& e) {  // syntax, and numbers beyond a double (out_of_range)
         throw InputError("not valid JSON: " + readable_json_message(e.what()));
     }
     return parse_scene(j, catalogue);
