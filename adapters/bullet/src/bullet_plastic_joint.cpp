@@ -12,12 +12,14 @@ constexpr double kPushSpeed = 1e9;  // [m/s or rad/s]
 Vec3 to_vec3(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
 btVector3 to_bt(const Vec3& v) { return btVector3(v[0], v[1], v[2]); }
 
-std::unique_ptr<btGeneric6DofSpring2Constraint> make_constraint(btRigidBody* a, btRigidBody& b,
-                                                                 const btTransform& frame) {
+void make_constraint(std::optional<btGeneric6DofSpring2Constraint>& constraint, btRigidBody* a, btRigidBody& b,
+                     const btTransform& frame) {
     const btTransform in_b = b.getCenterOfMassTransform().inverse() * frame;
-    if (a == nullptr) return std::make_unique<btGeneric6DofSpring2Constraint>(b, in_b);
-    const btTransform in_a = a->getCenterOfMassTransform().inverse() * frame;
-    return std::make_unique<btGeneric6DofSpring2Constraint>(*a, b, in_a, in_b);
+    if (a == nullptr) {
+        constraint.emplace(b, in_b);
+    } else {
+        constraint.emplace(*a, b, a->getCenterOfMassTransform().inverse() * frame, in_b);
+    }
 }
 
 // 1 / (J M⁻¹ Jᵀ) of one body's part of a row along `axis`; a static body contributes nothing.
@@ -32,7 +34,11 @@ double inverse_mass_along(const btRigidBody& body, const btVector3& axis, const 
 
 BulletPlasticJoint::BulletPlasticJoint(btRigidBody* a, btRigidBody& b, const btTransform& frame_in_world,
                                        const PlasticJointSettings& settings)
-    : a_(a), b_(b), constraint_(make_constraint(a, b, frame_in_world)), law_(settings) {
+    : a_(a), b_(b), law_(settings) {
+    make_constraint(constraint_, a, b, frame_in_world);
+    for (Dof dof : kAllDofs) {
+        if (law_.mode(dof) == DofMode::Plastic && settings.laws[index(dof)].stiffness) needs_masses_ = true;
+    }
     constraint_->setJointFeedback(&feedback_);
     constraint_->enableFeedback(true);
     set_up_rows();
@@ -59,14 +65,14 @@ void BulletPlasticJoint::set_up_rows() {
 
 void BulletPlasticJoint::attach(btDynamicsWorld& world, double dt, double now) {
     time_ = now;
-    world.addConstraint(constraint_.get(), /*disableCollisionsBetweenLinkedBodies=*/true);
+    world.addConstraint(&*constraint_, /*disableCollisionsBetweenLinkedBodies=*/true);
     world.addAction(this);
-    plan(dt);
+    plan(dt, positions());
 }
 
 void BulletPlasticJoint::detach(btDynamicsWorld& world) {
     world.removeAction(this);
-    world.removeConstraint(constraint_.get());
+    world.removeConstraint(&*constraint_);
 }
 
 PerDof<double> BulletPlasticJoint::positions() {
@@ -91,10 +97,11 @@ JointAxesInWorld BulletPlasticJoint::axes_in_world() const {
 }
 
 PerDof<double> BulletPlasticJoint::effective_masses(const JointAxesInWorld& axes) const {
+    PerDof<double> masses{};
+    if (!needs_masses_) return masses;  // only springs need them (eq. 3.2)
     const btVector3 lever_b = to_bt(axes.anchor) - b_.getCenterOfMassPosition();
     const btVector3 lever_a = a_ ? constraint_->getCalculatedTransformA().getOrigin() - a_->getCenterOfMassPosition()
                                  : btVector3(0, 0, 0);
-    PerDof<double> masses{};
     for (std::size_t i = 0; i < 3; ++i) {
         const btVector3 t = to_bt(axes.translation[i]);
         const btVector3 r = to_bt(axes.rotation[i]);
@@ -110,8 +117,7 @@ PerDof<double> BulletPlasticJoint::effective_masses(const JointAxesInWorld& axes
     return masses;
 }
 
-void BulletPlasticJoint::plan(double dt) {
-    const PerDof<double> x = positions();
+void BulletPlasticJoint::plan(double dt, const PerDof<double>& x) {
     planned_axes_ = axes_in_world();
     planned_centre_of_b_ = to_vec3(b_.getCenterOfMassPosition());
     apply(law_.plan(x, dt, effective_masses(planned_axes_)));
@@ -139,11 +145,12 @@ void BulletPlasticJoint::updateAction(btCollisionWorld*, btScalar dt) {
     if (law_.broken()) return;
     const WorldLoad load{to_vec3(feedback_.m_appliedForceBodyB), to_vec3(feedback_.m_appliedTorqueBodyB)};
     forces_ = joint_frame_loads(load, planned_centre_of_b_, planned_axes_);
-    if (law_.settle(positions(), forces_, time_)) {
+    const PerDof<double> x = positions();  // the end of this step is the start of the next
+    if (law_.settle(x, forces_, time_)) {
         constraint_->setEnabled(false);  // broken stays broken: nothing re-enables it
         return;
     }
-    plan(dt);
+    plan(dt, x);
 }
 
 }  // namespace plascap

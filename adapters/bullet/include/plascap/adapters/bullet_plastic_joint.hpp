@@ -7,7 +7,7 @@
 // step's rows, and disables the constraint when the joint breaks.
 #include <btBulletDynamicsCommon.h>
 
-#include <memory>
+#include <optional>
 
 #include "plascap/adapters/joint_loads.hpp"
 #include "plascap/adapters/plastic_joint_law.hpp"
@@ -42,19 +42,22 @@ public:
 
 private:
     void set_up_rows();
-    void plan(double dt);
+    void plan(double dt, const PerDof<double>& positions);
     void apply(const PerDof<std::optional<RowCommand>>& commands);
     JointAxesInWorld axes_in_world() const;
     PerDof<double> effective_masses(const JointAxesInWorld& axes) const;
 
     btRigidBody* a_;
     btRigidBody& b_;
-    std::unique_ptr<btGeneric6DofSpring2Constraint> constraint_;
+    // Held in place, not on its own allocation: Bullet scans constraints every step, and a scattered
+    // layout measurably slows that scan (bench_bullet_joints).
+    std::optional<btGeneric6DofSpring2Constraint> constraint_;
     btJointFeedback feedback_{};
     PlasticJointLaw law_;
     JointAxesInWorld planned_axes_{};
     Vec3 planned_centre_of_b_{};
     PerDof<double> forces_{};
+    bool needs_masses_ = false;
     double time_ = 0.0;
 };
 
