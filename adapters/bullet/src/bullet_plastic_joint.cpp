@@ -131,7 +131,7 @@ void BulletPlasticJoint::apply(const PerDof<std::optional<RowCommand>>& commands
         // A motor row's velocity is −(the dof's rate) for every Spring2 axis (its Jacobian is
         // +axis on a, −axis on b); its bound is a force (Bullet ≥ 2.83 divides it by fps).
         if (c.kind == RowCommand::Kind::Hold) {
-            constraint_->setTargetVelocity(row, 0.0);
+            constraint_->setTargetVelocity(row, -c.velocity);
             constraint_->setMaxMotorForce(row, c.bound);
         } else {
             constraint_->setTargetVelocity(row, c.force > 0.0 ? -kPushSpeed : kPushSpeed);

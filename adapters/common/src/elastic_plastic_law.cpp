@@ -32,13 +32,21 @@ RowCommand ElasticPlasticLaw::plan(double position, double dt, double effective_
     regime_ = choose_regime(law_.stiffness, effective_mass, dt);
     omega_dt_ = spring_omega_dt(law_.stiffness, effective_mass, dt);
     if (regime_ != Regime::ElasticPlastic) {
-        // Paper §2: target velocity 0, force bounded by the capacity.
-        return RowCommand{RowCommand::Kind::Hold, hold_bound(), 0.0};
+        // Paper §2: target velocity 0, force bounded by the capacity; plus the correction.
+        last_bound_ = hold_bound();
+        RowCommand hold;
+        hold.kind = RowCommand::Kind::Hold;
+        hold.bound = last_bound_;
+        hold.velocity = -kHoldCorrection * (position - plastic_offset_) / dt;
+        return hold;
     }
     // Explicit spring force from the start-of-step position, capped at the capacities.
     const double spring = -*law_.stiffness * (position - plastic_offset_);
     const double force = std::clamp(spring, -law_.capacity_positive, law_.capacity_negative);
-    return RowCommand{RowCommand::Kind::Push, 0.0, force};
+    RowCommand push;
+    push.kind = RowCommand::Kind::Push;
+    push.force = force;
+    return push;
 }
 
 double ElasticPlasticLaw::hold_bound() const {
@@ -59,7 +67,8 @@ void ElasticPlasticLaw::settle(double position, double applied_force) {
 }
 
 void ElasticPlasticLaw::settle_rigid_plastic(double position, double applied_force) {
-    // Every motion is plastic; the row's work on it, −f·Δx, is absorbed.
+    // Motion at capacity is plastic flow and the row's work on it, −f·Δx, is absorbed.
+    if (!(std::abs(applied_force) >= kAtCapacity * last_bound_)) return;
     const double step = position - planned_position_;
     plastic_offset_ += step;
     accumulated_ += std::abs(step);

@@ -4,14 +4,24 @@
 // Force on body b: f = −k·(x − x_p), capped at −capacity_positive ≤ f ≤ capacity_negative, where x is
 // the dof position and x_p the plastic offset (the spring's moving equilibrium). When the elastic
 // trial force passes a capacity, x_p moves so the force equals it (return mapping; Simo & Hughes,
-// Computational Inelasticity, 1998, §1.2). Without a stiffness (or past eq. 3.2) every motion is
-// plastic: x_p follows x. The work the dof absorbs is the dissipated energy.
+// Computational Inelasticity, 1998, §1.2). Without a stiffness (or past eq. 3.2) the dof is
+// rigid-plastic: x_p follows x in the steps where the row was at its capacity; motion the engine's
+// iterative solver let through below capacity is not plastic and is corrected back towards x_p
+// (Baumgarte, with Bullet's and ODE's usual factor kHoldCorrection). The work the dof absorbs in
+// plastic flow is the dissipated energy.
 #include <optional>
 
 #include "plascap/adapters/regime.hpp"
 #include "plascap/adapters/row_command.hpp"
 
 namespace plascap {
+
+// The share of a rigid-plastic dof's position error corrected per step (Baumgarte; the default ERP
+// of Bullet and ODE is 0.2).
+inline constexpr double kHoldCorrection = 0.2;
+// A row counts as at its capacity above this share of it (the solver clamps to the bound exactly;
+// rotations read back through non-orthogonal Euler axes need the margin).
+inline constexpr double kAtCapacity = 0.99;
 
 struct DofLaw {
     double capacity_positive = 0.0;    // resists positive motion of b (N, Mx, Mz: tension side) [N | N·m]
@@ -56,6 +66,7 @@ private:
     double accumulated_ = 0.0;
     double dissipated_ = 0.0;
     double last_force_ = 0.0;
+    double last_bound_ = 0.0;
 };
 
 }  // namespace plascap

@@ -6,13 +6,16 @@ namespace plascap {
 struct RowCommand {
     enum class Kind {
         // Rigid-plastic (paper §2, "target velocity 0, impulse bounded by capacity × dt"): drive the
-        // dof's velocity to zero using at most `bound` in either direction.
+        // dof's velocity to `velocity` using at most `bound` in either direction. `velocity` is 0
+        // but for a Baumgarte correction back to the plastic offset of motion the solver let
+        // through below capacity.
         Hold,
         // Elastic-plastic: apply exactly `force` (the capped spring force) this step.
         Push,
     };
     Kind kind = Kind::Hold;
-    double bound = 0.0;  // Hold: largest force magnitude, ≥ 0
+    double bound = 0.0;     // Hold: largest force magnitude, ≥ 0
+    double velocity = 0.0;  // Hold: target rate of the dof [m/s | rad/s]
     double force = 0.0;  // Push: signed force, |force| ≤ the capacity on its side
 };
 
