@@ -3,7 +3,8 @@
 namespace plascap::test {
 namespace {
 
-void record(Trace& trace, BulletPlasticJoint& joint, btRigidBody& body, Dof dof, const btVector3& up,
+template <class Joint>
+void record(Trace& trace, Joint& joint, btRigidBody& body, Dof dof, const btVector3& up,
             double potential_energy) {
     const PerDof<double> x = joint.positions();
     const ElasticPlasticLaw& law = *joint.law().law(dof);
@@ -20,9 +21,8 @@ void record(Trace& trace, BulletPlasticJoint& joint, btRigidBody& body, Dof dof,
     trace.energy.push_back(kinetic + potential_energy + trace.elastic.back() + law.dissipated());
 }
 
-}  // namespace
-
-Trace run(const HangingBlock& s) {
+template <class Joint>
+Trace run_hanging(const HangingBlock& s) {
     const btMatrix3x3 turn(s.turn);
     const btVector3 up = turn * btVector3(0, 1, 0);
     BulletWorld world(-s.g * up, s.iterations);
@@ -33,7 +33,7 @@ Trace run(const HangingBlock& s) {
     settings.modes = {DofMode::Rigid, DofMode::Plastic, DofMode::Rigid, DofMode::Rigid, DofMode::Rigid, DofMode::Rigid};
     settings.laws[index(Dof::N)] = DofLaw{s.capacity, s.capacity, s.stiffness};
     settings.max_plastic_displacement = s.max_plastic_displacement;
-    BulletPlasticJoint joint(nullptr, block.body(), btTransform(s.turn, btVector3(0, 0, 0)), settings);
+    Joint joint(nullptr, block.body(), btTransform(s.turn, btVector3(0, 0, 0)), settings);
 
     for (int i = 0; i < s.engage_after_steps; ++i) world.step(s.dt);  // the paper's joint acts from step 2
     joint.attach(world.world(), s.dt);
@@ -50,7 +50,8 @@ Trace run(const HangingBlock& s) {
     return trace;
 }
 
-Trace run(const Cantilever& s) {
+template <class Joint>
+Trace run_cantilever(const Cantilever& s) {
     // The rod lies along world x from the anchor; the joint's beam axis y is the rod's axis and its
     // x axis is world up, so z = x × y = −world z and gravity bends the rod about +z: the Mz dof.
     const btMatrix3x3 turn(s.turn);
@@ -67,7 +68,7 @@ Trace run(const Cantilever& s) {
                                   1, 0, 0,
                                   0, 0, -1);
     btTransform frame(turn * frame_basis, btVector3(0, 0, 0));
-    BulletPlasticJoint joint(nullptr, rod.body(), frame, settings);
+    Joint joint(nullptr, rod.body(), frame, settings);
     joint.attach(world.world(), s.dt);
     const double y0 = rod.body().getCenterOfMassPosition().dot(up);
     Trace trace;
@@ -79,6 +80,16 @@ Trace run(const Cantilever& s) {
     joint.detach(world.world());
     world.world().removeRigidBody(&rod.body());
     return trace;
+}
+
+}  // namespace
+
+Trace run(const HangingBlock& s) {
+    return s.spring1 ? run_hanging<BulletPlasticJoint6DofSpring>(s) : run_hanging<BulletPlasticJoint>(s);
+}
+
+Trace run(const Cantilever& s) {
+    return s.spring1 ? run_cantilever<BulletPlasticJoint6DofSpring>(s) : run_cantilever<BulletPlasticJoint>(s);
 }
 
 }  // namespace plascap::test

@@ -21,6 +21,7 @@ struct HangingBlock {
     double max_plastic_displacement = INFINITY;
     int iterations = 10, steps = 300, engage_after_steps = 0;
     btQuaternion turn = btQuaternion::getIdentity();
+    bool spring1 = false;  // drive a btGeneric6DofSpringConstraint instead of Spring2
 };
 
 struct Cantilever {
@@ -28,6 +29,7 @@ struct Cantilever {
     std::optional<double> stiffness;
     int iterations = 20, steps = 300;
     btQuaternion turn = btQuaternion::getIdentity();
+    bool spring1 = false;  // drive a btGeneric6DofSpringConstraint instead of Spring2
     double inertia_about_anchor() const {
         return mass * (length * length + thickness * thickness) / 12.0 + mass * length * length / 4.0;
     }

@@ -104,6 +104,33 @@ TEST_P(SuddenLoad, PeakAndResidualPlasticDisplacementWithin2Percent) {
 
 INSTANTIATE_TEST_SUITE_P(OmegaDt, SuddenLoad, ::testing::Values(0.01, 0.03, 0.1));
 
+// The paper develops both of Bullet's 6-dof spring constraints: the first one
+// (btGeneric6DofSpringConstraint) gives the same results through BulletPlasticJoint6DofSpring.
+TEST(BulletFirstSpringConstraint, SameAnalyticResultsAsSpring2) {
+    HangingBlock oscillator;
+    oscillator.stiffness = 100.0;
+    oscillator.capacity = 10.0 / 0.75;
+    oscillator.steps = 400;
+    HangingBlock flow;
+    flow.mass = 3.0;
+    flow.capacity = 18.0;
+    flow.max_plastic_displacement = 0.5;
+    flow.steps = 100;
+    Cantilever rod;
+    rod.capacity = 10.0 / 0.75;
+    rod.dt = 0.001;
+    rod.stiffness = 100.0 * 100.0 * rod.inertia_about_anchor();
+    for (bool spring1 : {false, true}) {
+        oscillator.spring1 = flow.spring1 = rod.spring1 = spring1;
+        const Trace o = run(oscillator), f = run(flow), r = run(rod);
+        const Oscillator linear{oscillator.mass * oscillator.g, oscillator.capacity, *oscillator.stiffness};
+        EXPECT_NEAR(o.plastic.back(), linear.residual(), 0.02 * linear.residual()) << "spring1 " << spring1;
+        EXPECT_NEAR(f.broken_at, 0.50, 1e-9) << "spring1 " << spring1;
+        const Oscillator angular{rod.mass * rod.g * rod.length / 2, rod.capacity, *rod.stiffness};
+        EXPECT_NEAR(r.plastic.back(), angular.residual(), 0.02 * angular.residual()) << "spring1 " << spring1;
+    }
+}
+
 TEST(BulletElasticPlastic, UnloadsWithSlopeK) {
     HangingBlock s;
     s.stiffness = 100.0;

@@ -18,9 +18,11 @@ btTransform joint_frame(const SceneJoint& joint) {
     return btTransform(basis, bt(joint.anchor));
 }
 
+template <class Joint>
 class BulletScene : public SceneEngine {
 public:
-    explicit BulletScene(const Scene& scene) : scene_(scene), world_(bt(scene.gravity), scene.iterations) {
+    BulletScene(const Scene& scene, const char* constraint)
+        : scene_(scene), constraint_(constraint), world_(bt(scene.gravity), scene.iterations) {
         for (const SceneBody& b : scene.bodies) {
             const btQuaternion q(b.orientation[1], b.orientation[2], b.orientation[3], b.orientation[0]);
             boxes_.push_back(std::make_unique<BulletBox>(bt(b.size) * 0.5, b.is_static ? 0.0 : b.mass,
@@ -32,7 +34,7 @@ public:
         }
         for (const SceneJoint& j : scene.joints) {
             btRigidBody* a = j.a ? &boxes_[*j.a]->body() : nullptr;
-            joints_.push_back(std::make_unique<BulletPlasticJoint>(a, boxes_[j.b]->body(), joint_frame(j), j.settings));
+            joints_.push_back(std::make_unique<Joint>(a, boxes_[j.b]->body(), joint_frame(j), j.settings));
             engaged_.push_back(false);
         }
     }
@@ -46,7 +48,7 @@ public:
 
     std::string description() const override {
         return std::string("Bullet ") + std::to_string(btGetVersion() / 100) + "." + std::to_string(btGetVersion() % 100) +
-               (sizeof(btScalar) == 8 ? ", double precision" : ", single precision");
+               (sizeof(btScalar) == 8 ? ", double precision, " : ", single precision, ") + constraint_;
     }
 
     void step() override {
@@ -76,9 +78,10 @@ public:
 
 private:
     const Scene& scene_;
+    const char* constraint_;
     BulletWorld world_;
     std::vector<std::unique_ptr<BulletBox>> boxes_;
-    std::vector<std::unique_ptr<BulletPlasticJoint>> joints_;
+    std::vector<std::unique_ptr<Joint>> joints_;
     std::vector<bool> engaged_;
     std::size_t steps_ = 0;
     double time_ = 0.0;
@@ -86,6 +89,11 @@ private:
 
 }  // namespace
 
-std::unique_ptr<SceneEngine> make_bullet_scene(const Scene& scene) { return std::make_unique<BulletScene>(scene); }
+std::unique_ptr<SceneEngine> make_bullet_scene(const Scene& scene, bool first_spring_constraint) {
+    if (first_spring_constraint) {
+        return std::make_unique<BulletScene<BulletPlasticJoint6DofSpring>>(scene, "btGeneric6DofSpringConstraint");
+    }
+    return std::make_unique<BulletScene<BulletPlasticJoint>>(scene, "btGeneric6DofSpring2Constraint");
+}
 
 }  // namespace plascap

@@ -4,20 +4,22 @@
 namespace plascap {
 
 #ifdef PLASCAP_HAVE_BULLET
-std::unique_ptr<SceneEngine> make_bullet_scene(const Scene& scene);
+std::unique_ptr<SceneEngine> make_bullet_scene(const Scene& scene, bool first_spring_constraint);
 #endif
 
 std::vector<std::string> available_engines() {
     std::vector<std::string> names;
 #ifdef PLASCAP_HAVE_BULLET
-    names.push_back("bullet");
+    names.push_back("bullet");              // btGeneric6DofSpring2Constraint
+    names.push_back("bullet-6dof-spring");  // btGeneric6DofSpringConstraint, the paper's first
 #endif
     return names;
 }
 
 std::unique_ptr<SceneEngine> make_engine(const std::string& name, const Scene& scene) {
 #ifdef PLASCAP_HAVE_BULLET
-    if (name == "bullet") return make_bullet_scene(scene);
+    if (name == "bullet") return make_bullet_scene(scene, false);
+    if (name == "bullet-6dof-spring") return make_bullet_scene(scene, true);
 #endif
     std::string list;
     for (const std::string& n : available_engines()) list += (list.empty() ? "" : ", ") + n;

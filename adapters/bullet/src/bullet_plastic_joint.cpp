@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "bullet_six_dof_rows.hpp"
+
 namespace plascap {
 namespace {
 
@@ -11,16 +13,6 @@ constexpr double kPushSpeed = 1e9;  // [m/s or rad/s]
 
 Vec3 to_vec3(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
 btVector3 to_bt(const Vec3& v) { return btVector3(v[0], v[1], v[2]); }
-
-void make_constraint(std::optional<btGeneric6DofSpring2Constraint>& constraint, btRigidBody* a, btRigidBody& b,
-                     const btTransform& frame) {
-    const btTransform in_b = b.getCenterOfMassTransform().inverse() * frame;
-    if (a == nullptr) {
-        constraint.emplace(b, in_b);
-    } else {
-        constraint.emplace(*a, b, a->getCenterOfMassTransform().inverse() * frame, in_b);
-    }
-}
 
 // 1 / (J M⁻¹ Jᵀ) of one body's part of a row along `axis`; a static body contributes nothing.
 double inverse_mass_along(const btRigidBody& body, const btVector3& axis, const btVector3* lever) {
@@ -32,10 +24,12 @@ double inverse_mass_along(const btRigidBody& body, const btVector3& axis, const 
 
 }  // namespace
 
-BulletPlasticJoint::BulletPlasticJoint(btRigidBody* a, btRigidBody& b, const btTransform& frame_in_world,
-                                       const PlasticJointSettings& settings)
+template <class Constraint>
+BasicBulletPlasticJoint<Constraint>::BasicBulletPlasticJoint(btRigidBody* a, btRigidBody& b,
+                                                             const btTransform& frame_in_world,
+                                                             const PlasticJointSettings& settings)
     : a_(a), b_(b), law_(settings) {
-    make_constraint(constraint_, a, b, frame_in_world);
+    bullet_rows::emplace(constraint_, a, b, frame_in_world);
     for (Dof dof : kAllDofs) {
         if (law_.mode(dof) == DofMode::Plastic && settings.laws[index(dof)].stiffness) needs_masses_ = true;
     }
@@ -44,9 +38,11 @@ BulletPlasticJoint::BulletPlasticJoint(btRigidBody* a, btRigidBody& b, const btT
     set_up_rows();
 }
 
-BulletPlasticJoint::~BulletPlasticJoint() = default;
+template <class Constraint>
+BasicBulletPlasticJoint<Constraint>::~BasicBulletPlasticJoint() = default;
 
-void BulletPlasticJoint::set_up_rows() {
+template <class Constraint>
+void BasicBulletPlasticJoint<Constraint>::set_up_rows() {
     for (Dof dof : kAllDofs) {
         const int i = static_cast<int>(index(dof));
         switch (law_.mode(dof)) {
@@ -58,34 +54,38 @@ void BulletPlasticJoint::set_up_rows() {
                 constraint_->setLimit(i, 1.0, -1.0);  // lo > hi: no limit row; a motor still acts
                 break;
         }
-        constraint_->enableMotor(i, law_.mode(dof) == DofMode::Plastic);
-        constraint_->enableSpring(i, false);
+        bullet_rows::set_motor(*constraint_, i, law_.mode(dof) == DofMode::Plastic, 0.0, 0.0);
+        bullet_rows::disable_springs(*constraint_, i);
     }
 }
 
-void BulletPlasticJoint::attach(btDynamicsWorld& world, double dt, double now) {
+template <class Constraint>
+void BasicBulletPlasticJoint<Constraint>::attach(btDynamicsWorld& world, double dt, double now) {
     time_ = now;
     world.addConstraint(&*constraint_, /*disableCollisionsBetweenLinkedBodies=*/true);
     world.addAction(this);
     plan(dt, positions());
 }
 
-void BulletPlasticJoint::detach(btDynamicsWorld& world) {
+template <class Constraint>
+void BasicBulletPlasticJoint<Constraint>::detach(btDynamicsWorld& world) {
     world.removeAction(this);
     world.removeConstraint(&*constraint_);
 }
 
-PerDof<double> BulletPlasticJoint::positions() {
+template <class Constraint>
+PerDof<double> BasicBulletPlasticJoint<Constraint>::positions() {
     constraint_->calculateTransforms();
     PerDof<double> x{};
     for (int i = 0; i < 3; ++i) {
         x[i] = constraint_->getRelativePivotPosition(i);
-        x[i + 3] = -constraint_->getAngle(i);  // Bullet's Spring2 angles turn the other way
+        x[i + 3] = -constraint_->getAngle(i);  // Bullet's 6-dof angles turn the other way
     }
     return x;
 }
 
-JointAxesInWorld BulletPlasticJoint::axes_in_world() const {
+template <class Constraint>
+JointAxesInWorld BasicBulletPlasticJoint<Constraint>::axes_in_world() const {
     JointAxesInWorld axes;
     axes.anchor = to_vec3(constraint_->getCalculatedTransformB().getOrigin());
     const btMatrix3x3& basis = constraint_->getCalculatedTransformA().getBasis();
@@ -96,7 +96,8 @@ JointAxesInWorld BulletPlasticJoint::axes_in_world() const {
     return axes;
 }
 
-PerDof<double> BulletPlasticJoint::effective_masses(const JointAxesInWorld& axes) const {
+template <class Constraint>
+PerDof<double> BasicBulletPlasticJoint<Constraint>::effective_masses(const JointAxesInWorld& axes) const {
     PerDof<double> masses{};
     if (!needs_masses_) return masses;  // only springs need them (eq. 3.2)
     const btVector3 lever_b = to_bt(axes.anchor) - b_.getCenterOfMassPosition();
@@ -117,13 +118,15 @@ PerDof<double> BulletPlasticJoint::effective_masses(const JointAxesInWorld& axes
     return masses;
 }
 
-void BulletPlasticJoint::plan(double dt, const PerDof<double>& x) {
+template <class Constraint>
+void BasicBulletPlasticJoint<Constraint>::plan(double dt, const PerDof<double>& x) {
     planned_axes_ = axes_in_world();
     planned_centre_of_b_ = to_vec3(b_.getCenterOfMassPosition());
     apply(law_.plan(x, dt, effective_masses(planned_axes_)));
 }
 
-void BulletPlasticJoint::apply(const PerDof<std::optional<RowCommand>>& commands) {
+template <class Constraint>
+void BasicBulletPlasticJoint<Constraint>::apply(const PerDof<std::optional<RowCommand>>& commands) {
     for (std::size_t i = 0; i < kDofCount; ++i) {
         if (!commands[i]) continue;
         const int row = static_cast<int>(i);
@@ -131,16 +134,15 @@ void BulletPlasticJoint::apply(const PerDof<std::optional<RowCommand>>& commands
         // A motor row's velocity is −(the dof's rate) for every Spring2 axis (its Jacobian is
         // +axis on a, −axis on b); its bound is a force (Bullet ≥ 2.83 divides it by fps).
         if (c.kind == RowCommand::Kind::Hold) {
-            constraint_->setTargetVelocity(row, -c.velocity);
-            constraint_->setMaxMotorForce(row, c.bound);
+            bullet_rows::set_motor(*constraint_, row, true, -c.velocity, c.bound);
         } else {
-            constraint_->setTargetVelocity(row, c.force > 0.0 ? -kPushSpeed : kPushSpeed);
-            constraint_->setMaxMotorForce(row, std::abs(c.force));
+            bullet_rows::set_motor(*constraint_, row, true, c.force > 0.0 ? -kPushSpeed : kPushSpeed, std::abs(c.force));
         }
     }
 }
 
-void BulletPlasticJoint::updateAction(btCollisionWorld*, btScalar dt) {
+template <class Constraint>
+void BasicBulletPlasticJoint<Constraint>::updateAction(btCollisionWorld*, btScalar dt) {
     time_ += dt;
     if (law_.broken()) return;
     const WorldLoad load{to_vec3(feedback_.m_appliedForceBodyB), to_vec3(feedback_.m_appliedTorqueBodyB)};
@@ -152,5 +154,8 @@ void BulletPlasticJoint::updateAction(btCollisionWorld*, btScalar dt) {
     }
     plan(dt, x);
 }
+
+template class BasicBulletPlasticJoint<btGeneric6DofSpring2Constraint>;
+template class BasicBulletPlasticJoint<btGeneric6DofSpringConstraint>;
 
 }  // namespace plascap
