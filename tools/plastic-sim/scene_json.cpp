@@ -19,6 +19,20 @@ using namespace scene_json;
 
 // More steps than this is a typo in dt or duration, not a simulation anyone waits for.
 constexpr double kMaxSteps = 1e7;
+// Beyond these a scene is a unit mistake, and an engine's bounding boxes and inertias overflow.
+constexpr double kMaxSize = 1e4;       // box edge [m]
+constexpr double kMaxMass = 1e12;      // [kg]
+constexpr double kMaxCoordinate = 1e6; // |position| [m]
+constexpr double kMaxSpeed = 1e5;      // |velocity| [m/s], |angular velocity| [rad/s]
+
+// `limit_text` says the limit with its unit, e.g. "1e4 m".
+void within(const Vec3& v, double limit, const std::string& where, const char* limit_text) {
+    for (std::size_t i = 0; i < 3; ++i) {
+        if (std::abs(v[i]) > limit) {
+            throw InputError(where + "[" + std::to_string(i) + "]: beyond the supported " + limit_text);
+        }
+    }
+}
 
 SceneBody parse_body(const Json& j, const std::string& where) {
     require_object(j, where);
@@ -34,15 +48,19 @@ SceneBody parse_body(const Json& j, const std::string& where) {
     for (std::size_t i = 0; i < 3; ++i) {
         if (!(body.size[i] > 0.0)) throw InputError(at + ".box[" + std::to_string(i) + "]: must be positive");
     }
+    within(body.size, kMaxSize, at + ".box", "1e4 m");
     const bool has_mass = j.contains("mass"), has_density = j.contains("density");
     if (has_mass == has_density) throw InputError(at + ": give exactly one of \"mass\" and \"density\"");
     body.mass = has_mass ? positive_number(j["mass"], at + ".mass")
                          : positive_number(j["density"], at + ".density") * body.size[0] * body.size[1] * body.size[2];
-    if (!std::isfinite(body.mass)) throw InputError(at + ": the mass overflows");
+    if (!(body.mass <= kMaxMass)) throw InputError(at + ": the mass is beyond the supported 1e12 kg");
     if (j.contains("position")) body.position = vec3(j["position"], at + ".position");
+    within(body.position, kMaxCoordinate, at + ".position", "1e6 m");
     if (j.contains("orientation")) body.orientation = unit_quaternion(j["orientation"], at + ".orientation");
     if (j.contains("velocity")) body.velocity = vec3(j["velocity"], at + ".velocity");
     if (j.contains("angular_velocity")) body.angular_velocity = vec3(j["angular_velocity"], at + ".angular_velocity");
+    within(body.velocity, kMaxSpeed, at + ".velocity", "1e5 m/s");
+    within(body.angular_velocity, kMaxSpeed, at + ".angular_velocity", "1e5 rad/s");
     if (j.contains("static")) {
         if (!j["static"].is_boolean()) throw InputError(at + ".static: expected true or false");
         body.is_static = j["static"].get<bool>();
@@ -68,6 +86,7 @@ Scene parse_scene(const Json& j, const MaterialCatalogue& catalogue) {
     }
     if (j.contains("iterations")) scene.iterations = parse_iterations(j["iterations"]);
     if (j.contains("gravity")) scene.gravity = vec3(j["gravity"], "gravity");
+    within(scene.gravity, kMaxSpeed, "gravity", "1e5 m/s²");
 
     const Json& bodies = member(j, "bodies", "scene");
     if (!bodies.is_array() || bodies.empty()) throw InputError("bodies: expected a non-empty array");

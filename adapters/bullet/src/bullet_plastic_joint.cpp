@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "bullet_six_dof_rows.hpp"
+#include "plascap/adapters/row_effective_mass.hpp"
 
 namespace plascap {
 namespace {
@@ -12,14 +13,14 @@ namespace {
 constexpr double kPushSpeed = 1e9;  // [m/s or rad/s]
 
 Vec3 to_vec3(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
-btVector3 to_bt(const Vec3& v) { return btVector3(v[0], v[1], v[2]); }
 
-// 1 / (J M⁻¹ Jᵀ) of one body's part of a row along `axis`; a static body contributes nothing.
-double inverse_mass_along(const btRigidBody& body, const btVector3& axis, const btVector3* lever) {
-    const btVector3 angular = lever ? lever->cross(axis) : axis;
-    double w = (body.getInvInertiaTensorWorld() * angular).dot(angular);
-    if (lever) w += body.getInvMass();
-    return w;
+BodyInertia inertia_of(const btRigidBody& body) {
+    BodyInertia inertia;
+    inertia.inverse_mass = body.getInvMass();
+    const btMatrix3x3& i = body.getInvInertiaTensorWorld();
+    for (int r = 0; r < 3; ++r) inertia.inverse_inertia_world[r] = {i[r].x(), i[r].y(), i[r].z()};
+    inertia.centre = to_vec3(body.getCenterOfMassPosition());
+    return inertia;
 }
 
 }  // namespace
@@ -98,24 +99,9 @@ JointAxesInWorld BasicBulletPlasticJoint<Constraint>::axes_in_world() const {
 
 template <class Constraint>
 PerDof<double> BasicBulletPlasticJoint<Constraint>::effective_masses(const JointAxesInWorld& axes) const {
-    PerDof<double> masses{};
-    if (!needs_masses_) return masses;  // only springs need them (eq. 3.2)
-    const btVector3 lever_b = to_bt(axes.anchor) - b_.getCenterOfMassPosition();
-    const btVector3 lever_a = a_ ? constraint_->getCalculatedTransformA().getOrigin() - a_->getCenterOfMassPosition()
-                                 : btVector3(0, 0, 0);
-    for (std::size_t i = 0; i < 3; ++i) {
-        const btVector3 t = to_bt(axes.translation[i]);
-        const btVector3 r = to_bt(axes.rotation[i]);
-        double wt = inverse_mass_along(b_, t, &lever_b);
-        double wr = inverse_mass_along(b_, r, nullptr);
-        if (a_) {
-            wt += inverse_mass_along(*a_, t, &lever_a);
-            wr += inverse_mass_along(*a_, r, nullptr);
-        }
-        masses[i] = wt > 0.0 ? 1.0 / wt : INFINITY;
-        masses[i + 3] = wr > 0.0 ? 1.0 / wr : INFINITY;
-    }
-    return masses;
+    if (!needs_masses_) return {};  // only springs need them (eq. 3.2)
+    return row_effective_masses(axes, inertia_of(b_),
+                                a_ ? std::optional<BodyInertia>(inertia_of(*a_)) : std::nullopt);
 }
 
 template <class Constraint>
