@@ -4,6 +4,7 @@
 
 #include "plascap/adapters/bullet_plastic_joint.hpp"
 #include "plascap/adapters/bullet_world.hpp"
+#include "joint_schedule.hpp"
 #include "scene_engine.hpp"
 
 namespace plascap {
@@ -22,7 +23,7 @@ template <class Joint>
 class BulletScene : public SceneEngine {
 public:
     BulletScene(const Scene& scene, const char* constraint)
-        : scene_(scene), constraint_(constraint), world_(bt(scene.gravity), scene.iterations) {
+        : scene_(scene), constraint_(constraint), world_(bt(scene.gravity), scene.iterations), schedule_(scene) {
         for (const SceneBody& b : scene.bodies) {
             const btQuaternion q(b.orientation[1], b.orientation[2], b.orientation[3], b.orientation[0]);
             boxes_.push_back(std::make_unique<BulletBox>(bt(b.size) * 0.5, b.is_static ? 0.0 : b.mass,
@@ -35,13 +36,12 @@ public:
         for (const SceneJoint& j : scene.joints) {
             btRigidBody* a = j.a ? &boxes_[*j.a]->body() : nullptr;
             joints_.push_back(std::make_unique<Joint>(a, boxes_[j.b]->body(), joint_frame(j), j.settings));
-            engaged_.push_back(false);
         }
     }
 
     ~BulletScene() override {
         for (std::size_t i = 0; i < joints_.size(); ++i) {
-            if (engaged_[i]) joints_[i]->detach(world_.world());
+            if (schedule_.engaged(i)) joints_[i]->detach(world_.world());
         }
         for (auto& box : boxes_) world_.world().removeRigidBody(&box->body());
     }
@@ -52,12 +52,7 @@ public:
     }
 
     void step() override {
-        for (std::size_t i = 0; i < joints_.size(); ++i) {
-            if (!engaged_[i] && scene_.joints[i].engage_at < time_ + 0.5 * scene_.dt) {
-                joints_[i]->attach(world_.world(), scene_.dt, time_);
-                engaged_[i] = true;
-            }
-        }
+        for (std::size_t i : schedule_.due(time_)) joints_[i]->attach(world_.world(), scene_.dt, time_);
         world_.step(scene_.dt);
         ++steps_;
         time_ = static_cast<double>(steps_) * scene_.dt;
@@ -71,7 +66,7 @@ public:
     }
 
     const PlasticJointLaw* joint_law(std::size_t index) const override {
-        return engaged_[index] ? &joints_[index]->law() : nullptr;
+        return schedule_.engaged(index) ? &joints_[index]->law() : nullptr;
     }
 
     PerDof<double> joint_forces(std::size_t index) const override { return joints_[index]->forces(); }
@@ -80,9 +75,9 @@ private:
     const Scene& scene_;
     const char* constraint_;
     BulletWorld world_;
+    JointSchedule schedule_;
     std::vector<std::unique_ptr<BulletBox>> boxes_;
     std::vector<std::unique_ptr<Joint>> joints_;
-    std::vector<bool> engaged_;
     std::size_t steps_ = 0;
     double time_ = 0.0;
 };

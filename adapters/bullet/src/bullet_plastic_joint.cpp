@@ -63,9 +63,16 @@ void BasicBulletPlasticJoint<Constraint>::set_up_rows() {
 template <class Constraint>
 void BasicBulletPlasticJoint<Constraint>::attach(btDynamicsWorld& world, double dt, double now) {
     time_ = now;
+    const PerDof<double> x = positions();
+    law_.start(x);
+    for (Dof dof : kAllDofs) {  // rigid dofs lock where the joint takes hold
+        const int i = static_cast<int>(index(dof));
+        const double at = is_rotation(dof) ? -x[index(dof)] : x[index(dof)];  // Bullet's angle sign
+        if (law_.mode(dof) == DofMode::Rigid) constraint_->setLimit(i, at, at);
+    }
     world.addConstraint(&*constraint_, /*disableCollisionsBetweenLinkedBodies=*/true);
     world.addAction(this);
-    plan(dt, positions());
+    plan(dt, x);
 }
 
 template <class Constraint>

@@ -27,6 +27,11 @@ void validate_dof_law(const DofLaw& law, const char* where) {
 ElasticPlasticLaw::ElasticPlasticLaw(const DofLaw& law)
     : law_(law), regime_(law.stiffness ? Regime::ElasticPlastic : Regime::RigidPlastic) {}
 
+void ElasticPlasticLaw::start(double position) {
+    plastic_offset_ = position;
+    planned_position_ = position;
+}
+
 RowCommand ElasticPlasticLaw::plan(double position, double dt, double effective_mass) {
     planned_position_ = position;
     regime_ = choose_regime(law_.stiffness, effective_mass, dt);

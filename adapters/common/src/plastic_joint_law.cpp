@@ -14,6 +14,12 @@ const ElasticPlasticLaw* PlasticJointLaw::law(Dof dof) const {
     return law ? &*law : nullptr;
 }
 
+void PlasticJointLaw::start(const PerDof<double>& positions) {
+    for (std::size_t i = 0; i < kDofCount; ++i) {
+        if (laws_[i]) laws_[i]->start(positions[i]);
+    }
+}
+
 PerDof<std::optional<RowCommand>> PlasticJointLaw::plan(const PerDof<double>& positions, double dt,
                                                         const PerDof<double>& effective_masses) {
     PerDof<std::optional<RowCommand>> commands;

@@ -37,6 +37,9 @@ class ElasticPlasticLaw {
 public:
     explicit ElasticPlasticLaw(const DofLaw& law);
 
+    // When the joint takes hold: the dof's position then is its unloaded, unyielded state.
+    void start(double position);
+
     // Before a step: the row command from the current position, the step and the row's effective
     // mass (for eq. 3.2).
     RowCommand plan(double position, double dt, double effective_mass);

@@ -13,6 +13,10 @@ class PlasticJointLaw {
 public:
     explicit PlasticJointLaw(const PlasticJointSettings& settings);
 
+    // When the joint takes hold (it may be built before, on bodies that have moved since): these
+    // positions are its unloaded state. Engines lock rigid dofs at them too.
+    void start(const PerDof<double>& positions);
+
     // Row commands for the plastic dofs (empty for free and rigid ones), from the dof positions,
     // the step and each row's effective mass.
     PerDof<std::optional<RowCommand>> plan(const PerDof<double>& positions, double dt,

@@ -1,0 +1,68 @@
+#pragma once
+// A plastic joint in an unmodified ODE (double precision), driving ODE rows from the shared
+// PlasticJointLaw (adapters/common), as the Bullet adapter drives Bullet's:
+//   rotations: one dJointTypeAMotor in user mode whose three axes are reset every step to the
+//     joint's Euler row axes (joint_frame.hpp), so a dof means the same in both engines;
+//   translations: ODE's LMotor applies its rows at the midpoint between the bodies' centres, not at
+//     the anchor, so the translation rows are the two tangential rows of contact joints placed at
+//     the anchor each step (their bounds are forces, their target velocities set; the contact's own
+//     normal row is made inert with a huge CFM). A row at the anchor is what a joint is.
+// Rigid dofs are rows with unbounded force and a Baumgarte target (ERP kHoldCorrection); free dofs
+// get no row. Feedback (dJointFeedback, world frame, torque about b's centre) of all of them is
+// summed and turned into joint-frame dof forces. A broken joint's rows are disabled for good.
+//
+// Use: construct after the bodies; engage(now) when the joint takes hold (its positions then are
+// its unloaded state); then before_step(dt) before each dWorldStep/dWorldQuickStep and
+// after_step(dt) after it.
+#include <ode/ode.h>
+
+#include <array>
+
+#include "plascap/adapters/joint_frame.hpp"
+#include "plascap/adapters/plastic_joint_law.hpp"
+
+namespace plascap {
+
+class OdePlasticJoint {
+public:
+    // a may be 0: b is then joined to the world. frame_in_world: origin = anchor, columns = the
+    // joint's x, y (beam axis) and z.
+    OdePlasticJoint(dWorldID world, dBodyID a, dBodyID b, const Pose& frame_in_world, const PlasticJointSettings& settings);
+    ~OdePlasticJoint();
+    OdePlasticJoint(const OdePlasticJoint&) = delete;
+    OdePlasticJoint& operator=(const OdePlasticJoint&) = delete;
+
+    void before_step(double dt);
+    void after_step(double dt);
+
+    const PlasticJointLaw& law() const { return law_; }
+    PerDof<double> positions() const { return measure().positions; }
+    const PerDof<double>& forces() const { return forces_; }
+    double time() const { return time_; }
+    void engage(double now);
+
+private:
+    JointFrameState measure() const;
+    PerDof<double> effective_masses(const JointAxesInWorld& axes) const;
+    void set_rotation_rows(const JointFrameState& state, const PerDof<std::optional<RowCommand>>& commands, double dt);
+    void set_translation_rows(const JointFrameState& state, const PerDof<std::optional<RowCommand>>& commands, double dt);
+    void disable_rows();
+
+    dWorldID world_;
+    dBodyID a_, b_;
+    Pose frame_on_a_, frame_on_b_;  // in a's and b's body coordinates (a = world: world coordinates)
+    dJointID rotations_ = nullptr;
+    dJointGroupID translations_ = nullptr;
+    dJointFeedback rotation_feedback_{};
+    std::array<dJointFeedback, 2> translation_feedback_{};
+    int translation_joints_ = 0;
+    PlasticJointLaw law_;
+    bool needs_masses_ = false;
+    JointAxesInWorld planned_axes_{};
+    Vec3 planned_centre_of_b_{};
+    PerDof<double> forces_{};
+    PerDof<double> reference_{};  // positions when it took hold: where rigid dofs are held
+    double time_ = 0.0;
+};
+
+}  // namespace plascap

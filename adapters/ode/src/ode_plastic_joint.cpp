@@ -1,0 +1,191 @@
+#include "plascap/adapters/ode_plastic_joint.hpp"
+
+#include <cmath>
+
+#include "plascap/adapters/joint_loads.hpp"
+#include "plascap/adapters/row_effective_mass.hpp"
+
+namespace plascap {
+namespace {
+
+// As in the Bullet adapter: a Push row asks for an unreachable speed and so ends on its bound.
+constexpr double kPushSpeed = 1e9;
+// Makes a contact joint's normal row inert: its force is (error)/(CFM) ≈ 0.
+constexpr double kInertCfm = 1e12;
+
+Pose pose_of(dBodyID body) {
+    Pose p;
+    const dReal* x = dBodyGetPosition(body);
+    const dReal* r = dBodyGetRotation(body);  // 3 rows of 4
+    p.origin = {x[0], x[1], x[2]};
+    for (int i = 0; i < 3; ++i) p.rotation[i] = {r[4 * i], r[4 * i + 1], r[4 * i + 2]};
+    return p;
+}
+
+BodyInertia inertia_of(dBodyID body) {
+    dMass m;
+    dBodyGetMass(body, &m);
+    const Pose p = pose_of(body);
+    // I_world⁻¹ = R·I_body⁻¹·Rᵀ
+    const double a = m.I[0], b = m.I[1], c = m.I[2], d = m.I[4], e = m.I[5], f = m.I[6], g = m.I[8], h = m.I[9], k = m.I[10];
+    const double det = a * (e * k - f * h) - b * (d * k - f * g) + c * (d * h - e * g);
+    const Mat3 inverse_body = {{{(e * k - f * h) / det, (c * h - b * k) / det, (b * f - c * e) / det},
+                                {(f * g - d * k) / det, (a * k - c * g) / det, (c * d - a * f) / det},
+                                {(d * h - e * g) / det, (b * g - a * h) / det, (a * e - b * d) / det}}};
+    BodyInertia inertia;
+    inertia.inverse_mass = 1.0 / m.mass;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            double sum = 0.0;
+            for (int p1 = 0; p1 < 3; ++p1)
+                for (int p2 = 0; p2 < 3; ++p2) sum += p.rotation[i][p1] * inverse_body[p1][p2] * p.rotation[j][p2];
+            inertia.inverse_inertia_world[i][j] = sum;
+        }
+    inertia.centre = p.origin;
+    return inertia;
+}
+
+// A row's target velocity and force bound for one dof this step.
+struct RowSetting {
+    double velocity = 0.0;
+    double bound = 0.0;  // 0: no row
+};
+
+RowSetting row_setting(DofMode mode, const std::optional<RowCommand>& command, double position, double reference,
+                       double dt) {
+    if (mode == DofMode::Free) return {};
+    if (mode == DofMode::Rigid) return {-kHoldCorrection * (position - reference) / dt, dInfinity};
+    if (command->kind == RowCommand::Kind::Hold) return {command->velocity, command->bound};
+    return {command->force > 0.0 ? kPushSpeed : -kPushSpeed, std::abs(command->force)};
+}
+
+void add(WorldLoad& load, const dJointFeedback& fb) {
+    for (int i = 0; i < 3; ++i) {
+        load.force[i] += fb.f1[i];
+        load.torque_about_com[i] += fb.t1[i];
+    }
+}
+
+}  // namespace
+
+OdePlasticJoint::OdePlasticJoint(dWorldID world, dBodyID a, dBodyID b, const Pose& frame_in_world,
+                                 const PlasticJointSettings& settings)
+    : world_(world), a_(a), b_(b), law_(settings) {
+    frame_on_a_ = a ? relative(pose_of(a), frame_in_world) : frame_in_world;
+    frame_on_b_ = relative(pose_of(b), frame_in_world);
+    bool any_rotation_row = false;
+    for (Dof dof : kAllDofs) {
+        if (law_.mode(dof) == DofMode::Plastic && settings.laws[index(dof)].stiffness) needs_masses_ = true;
+        if (is_rotation(dof) && law_.mode(dof) != DofMode::Free) any_rotation_row = true;
+    }
+    if (any_rotation_row) {
+        rotations_ = dJointCreateAMotor(world_, nullptr);
+        dJointAttach(rotations_, b_, a_);  // body 1 = b: a row's velocity is +(the dof's rate)
+        dJointSetAMotorMode(rotations_, dAMotorUser);
+        dJointSetAMotorNumAxes(rotations_, 3);
+        dJointSetFeedback(rotations_, &rotation_feedback_);
+    }
+    translations_ = dJointGroupCreate(0);
+}
+
+OdePlasticJoint::~OdePlasticJoint() {
+    if (rotations_) dJointDestroy(rotations_);
+    dJointGroupDestroy(translations_);
+}
+
+void OdePlasticJoint::engage(double now) {
+    time_ = now;
+    reference_ = measure().positions;
+    law_.start(reference_);
+}
+
+JointFrameState OdePlasticJoint::measure() const {
+    const Pose on_a = a_ ? compose(pose_of(a_), frame_on_a_) : frame_on_a_;
+    return measure_joint(on_a, compose(pose_of(b_), frame_on_b_));
+}
+
+PerDof<double> OdePlasticJoint::effective_masses(const JointAxesInWorld& axes) const {
+    if (!needs_masses_) return {};
+    return row_effective_masses(axes, inertia_of(b_), a_ ? std::optional<BodyInertia>(inertia_of(a_)) : std::nullopt);
+}
+
+void OdePlasticJoint::before_step(double dt) {
+    if (law_.broken()) return;
+    const JointFrameState state = measure();
+    planned_axes_ = state.axes;
+    const dReal* centre = dBodyGetPosition(b_);
+    planned_centre_of_b_ = {centre[0], centre[1], centre[2]};
+    const PerDof<std::optional<RowCommand>> commands = law_.plan(state.positions, dt, effective_masses(state.axes));
+    set_rotation_rows(state, commands, dt);
+    set_translation_rows(state, commands, dt);
+}
+
+void OdePlasticJoint::set_rotation_rows(const JointFrameState& state, const PerDof<std::optional<RowCommand>>& commands,
+                                        double dt) {
+    if (!rotations_) return;
+    static constexpr int kVel[3] = {dParamVel1, dParamVel2, dParamVel3};
+    static constexpr int kFMax[3] = {dParamFMax1, dParamFMax2, dParamFMax3};
+    for (int i = 0; i < 3; ++i) {
+        const Vec3& axis = state.axes.rotation[i];
+        dJointSetAMotorAxis(rotations_, i, 0, axis[0], axis[1], axis[2]);  // rel 0: world axes
+        const std::size_t dof = 3 + static_cast<std::size_t>(i);
+        const RowSetting row =
+            row_setting(law_.mode(kAllDofs[dof]), commands[dof], state.positions[dof], reference_[dof], dt);
+        dJointSetAMotorParam(rotations_, kVel[i], row.velocity);
+        dJointSetAMotorParam(rotations_, kFMax[i], row.bound);
+    }
+}
+
+void OdePlasticJoint::set_translation_rows(const JointFrameState& state,
+                                           const PerDof<std::optional<RowCommand>>& commands, double dt) {
+    dJointGroupEmpty(translations_);
+    translation_joints_ = 0;
+    std::array<RowSetting, 3> rows;
+    for (std::size_t i = 0; i < 3; ++i) {
+        rows[i] = row_setting(law_.mode(kAllDofs[i]), commands[i], state.positions[i], reference_[i], dt);
+    }
+    // Contact 1: normal along z, rows along x (fdir1) and y (= z × x); contact 2: normal along x,
+    // a row along z.
+    struct Pair {
+        std::size_t normal, first, second;
+        bool has_second;
+    };
+    const Pair pairs[2] = {{2, 0, 1, true}, {0, 2, 0, false}};
+    for (const Pair& p : pairs) {
+        const bool first = rows[p.first].bound > 0.0, second = p.has_second && rows[p.second].bound > 0.0;
+        if (!first && !second) continue;
+        dContact c{};
+        c.surface.mode = dContactMu2 | dContactFDir1 | dContactMotion1 | dContactMotion2 | dContactSoftCFM;
+        c.surface.mu = rows[p.first].bound;
+        c.surface.motion1 = rows[p.first].velocity;
+        c.surface.mu2 = second ? rows[p.second].bound : 0.0;
+        c.surface.motion2 = second ? rows[p.second].velocity : 0.0;
+        c.surface.soft_cfm = kInertCfm;
+        for (int k = 0; k < 3; ++k) {
+            c.geom.pos[k] = state.axes.anchor[k];
+            c.geom.normal[k] = state.axes.translation[p.normal][k];
+            c.fdir1[k] = state.axes.translation[p.first][k];
+        }
+        dJointID joint = dJointCreateContact(world_, translations_, &c);
+        dJointAttach(joint, b_, a_);
+        dJointSetFeedback(joint, &translation_feedback_[translation_joints_++]);
+    }
+}
+
+void OdePlasticJoint::disable_rows() {
+    if (rotations_) dJointDisable(rotations_);
+    dJointGroupEmpty(translations_);
+    translation_joints_ = 0;
+}
+
+void OdePlasticJoint::after_step(double dt) {
+    time_ += dt;
+    if (law_.broken()) return;
+    WorldLoad load;
+    if (rotations_) add(load, rotation_feedback_);
+    for (int i = 0; i < translation_joints_; ++i) add(load, translation_feedback_[i]);
+    forces_ = joint_frame_loads(load, planned_centre_of_b_, planned_axes_);
+    if (law_.settle(measure().positions, forces_, time_)) disable_rows();  // broken stays broken
+}
+
+}  // namespace plascap

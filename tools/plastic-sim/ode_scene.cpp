@@ -1,0 +1,153 @@
+// A Scene in ODE: boxes as dBody + dGeom (static boxes: a geom without a body), joints as
+// OdePlasticJoint, collisions through a hash space with contacts of friction 0.25 and no bounce
+// (Bullet's default: 0.5 per body, multiplied).
+#include <algorithm>
+#include <memory>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "joint_schedule.hpp"
+#include "plascap/adapters/ode_plastic_joint.hpp"
+#include "scene_engine.hpp"
+
+namespace plascap {
+namespace {
+
+constexpr double kFriction = 0.25;
+constexpr int kMaxContacts = 8;
+
+struct OdeLibrary {
+    OdeLibrary() { dInitODE2(0); }
+};
+
+class OdeScene : public SceneEngine {
+public:
+    OdeScene(const Scene& scene, bool quick) : scene_(scene), quick_(quick), schedule_(scene) {
+        static OdeLibrary library;  // dInitODE2 once per process
+        world_ = dWorldCreate();
+        dWorldSetGravity(world_, scene.gravity[0], scene.gravity[1], scene.gravity[2]);
+        dWorldSetQuickStepNumIterations(world_, scene.iterations);
+        space_ = dHashSpaceCreate(nullptr);
+        contacts_ = dJointGroupCreate(0);
+        for (const SceneBody& b : scene.bodies) add_body(b);
+        for (const SceneJoint& j : scene.joints) {
+            const dBodyID a = j.a ? bodies_[*j.a] : nullptr;  // a static body holds like the world
+            Pose frame;
+            frame.origin = j.anchor;
+            for (int r = 0; r < 3; ++r) frame.rotation[r] = {j.axes[0][r], j.axes[1][r], j.axes[2][r]};
+            joints_.push_back(std::make_unique<OdePlasticJoint>(world_, a, bodies_[j.b], frame, j.settings));
+            if (a) joined_.insert(std::minmax(a, bodies_[j.b]));
+        }
+    }
+
+    ~OdeScene() override {
+        joints_.clear();
+        dJointGroupDestroy(contacts_);
+        dSpaceDestroy(space_);  // destroys the geoms
+        dWorldDestroy(world_);  // and the bodies
+    }
+
+    std::string description() const override {
+        const bool double_precision = dCheckConfiguration("ODE_double_precision") != 0;
+        return std::string("ODE, ") + (double_precision ? "double" : "single") + " precision, " +
+               (quick_ ? "dWorldQuickStep" : "dWorldStep");
+    }
+
+    void step() override {
+        for (std::size_t i : schedule_.due(time_)) joints_[i]->engage(time_);
+        for (std::size_t i = 0; i < joints_.size(); ++i) {
+            if (schedule_.engaged(i)) joints_[i]->before_step(scene_.dt);
+        }
+        dSpaceCollide(space_, this, &OdeScene::near_callback);
+        if (quick_) {
+            dWorldQuickStep(world_, scene_.dt);
+        } else {
+            dWorldStep(world_, scene_.dt);
+        }
+        dJointGroupEmpty(contacts_);
+        for (std::size_t i = 0; i < joints_.size(); ++i) {
+            if (schedule_.engaged(i)) joints_[i]->after_step(scene_.dt);
+        }
+        ++steps_;
+        time_ = static_cast<double>(steps_) * scene_.dt;
+    }
+
+    double time() const override { return time_; }
+
+    BodyState body(std::size_t index) const override {
+        BodyState s;
+        if (!bodies_[index]) {
+            s.position = scene_.bodies[index].position;
+            return s;
+        }
+        const dReal* p = dBodyGetPosition(bodies_[index]);
+        const dReal* v = dBodyGetLinearVel(bodies_[index]);
+        const dReal* w = dBodyGetAngularVel(bodies_[index]);
+        s.position = {p[0], p[1], p[2]};
+        s.velocity = {v[0], v[1], v[2]};
+        s.angular_velocity = {w[0], w[1], w[2]};
+        return s;
+    }
+
+    const PlasticJointLaw* joint_law(std::size_t index) const override {
+        return schedule_.engaged(index) ? &joints_[index]->law() : nullptr;
+    }
+
+    PerDof<double> joint_forces(std::size_t index) const override { return joints_[index]->forces(); }
+
+private:
+    void add_body(const SceneBody& b) {
+        dGeomID geom = dCreateBox(space_, b.size[0], b.size[1], b.size[2]);
+        const dQuaternion q = {b.orientation[0], b.orientation[1], b.orientation[2], b.orientation[3]};
+        if (b.is_static) {
+            dGeomSetPosition(geom, b.position[0], b.position[1], b.position[2]);
+            dGeomSetQuaternion(geom, q);
+            bodies_.push_back(nullptr);
+            return;
+        }
+        dBodyID body = dBodyCreate(world_);
+        dMass mass;
+        dMassSetBoxTotal(&mass, b.mass, b.size[0], b.size[1], b.size[2]);
+        dBodySetMass(body, &mass);
+        dGeomSetBody(geom, body);
+        dBodySetPosition(body, b.position[0], b.position[1], b.position[2]);
+        dBodySetQuaternion(body, q);
+        dBodySetLinearVel(body, b.velocity[0], b.velocity[1], b.velocity[2]);
+        dBodySetAngularVel(body, b.angular_velocity[0], b.angular_velocity[1], b.angular_velocity[2]);
+        bodies_.push_back(body);
+    }
+
+    static void near_callback(void* data, dGeomID g1, dGeomID g2) {
+        auto* self = static_cast<OdeScene*>(data);
+        const dBodyID b1 = dGeomGetBody(g1), b2 = dGeomGetBody(g2);
+        if (!b1 && !b2) return;
+        if (b1 && b2 && self->joined_.count(std::minmax(b1, b2))) return;  // joined bodies do not collide
+        dContact contact[kMaxContacts];
+        const int n = dCollide(g1, g2, kMaxContacts, &contact[0].geom, sizeof(dContact));
+        for (int i = 0; i < n; ++i) {
+            contact[i].surface.mode = dContactApprox1;
+            contact[i].surface.mu = kFriction;
+            const dJointID c = dJointCreateContact(self->world_, self->contacts_, &contact[i]);
+            dJointAttach(c, b1, b2);
+        }
+    }
+
+    const Scene& scene_;
+    bool quick_;
+    JointSchedule schedule_;
+    dWorldID world_ = nullptr;
+    dSpaceID space_ = nullptr;
+    dJointGroupID contacts_ = nullptr;
+    std::vector<dBodyID> bodies_;  // nullptr for static bodies
+    std::vector<std::unique_ptr<OdePlasticJoint>> joints_;
+    std::set<std::pair<dBodyID, dBodyID>> joined_;
+    std::size_t steps_ = 0;
+    double time_ = 0.0;
+};
+
+}  // namespace
+
+std::unique_ptr<SceneEngine> make_ode_scene(const Scene& scene, bool quick) { return std::make_unique<OdeScene>(scene, quick); }
+
+}  // namespace plascap
