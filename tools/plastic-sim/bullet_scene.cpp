@@ -62,7 +62,9 @@ public:
 
     BodyState body(std::size_t index) const override {
         const btRigidBody& b = boxes_[index]->body();
-        return {vec(b.getCenterOfMassPosition()), vec(b.getLinearVelocity()), vec(b.getAngularVelocity())};
+        const btQuaternion q = b.getOrientation();
+        return {vec(b.getCenterOfMassPosition()), vec(b.getLinearVelocity()), vec(b.getAngularVelocity()),
+                Quaternion{q.w(), q.x(), q.y(), q.z()}};
     }
 
     const PlasticJointLaw* joint_law(std::size_t index) const override {
@@ -70,6 +72,7 @@ public:
     }
 
     PerDof<double> joint_forces(std::size_t index) const override { return joints_[index]->forces(); }
+    PerDof<double> joint_positions(std::size_t index) override { return joints_[index]->positions(); }
 
 private:
     const Scene& scene_;

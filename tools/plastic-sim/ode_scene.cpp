@@ -79,6 +79,7 @@ public:
         BodyState s;
         if (!bodies_[index]) {
             s.position = scene_.bodies[index].position;
+            s.orientation = scene_.bodies[index].orientation;
             return s;
         }
         const dReal* p = dBodyGetPosition(bodies_[index]);
@@ -87,6 +88,8 @@ public:
         s.position = {p[0], p[1], p[2]};
         s.velocity = {v[0], v[1], v[2]};
         s.angular_velocity = {w[0], w[1], w[2]};
+        const dReal* q = dBodyGetQuaternion(bodies_[index]);
+        s.orientation = {q[0], q[1], q[2], q[3]};
         return s;
     }
 
@@ -95,6 +98,7 @@ public:
     }
 
     PerDof<double> joint_forces(std::size_t index) const override { return joints_[index]->forces(); }
+    PerDof<double> joint_positions(std::size_t index) override { return joints_[index]->positions(); }
 
 private:
     void add_body(const SceneBody& b) {

@@ -16,6 +16,7 @@ struct BodyState {
     Vec3 position{};          // centre of mass [m]
     Vec3 velocity{};          // [m/s]
     Vec3 angular_velocity{};  // [rad/s]
+    Quaternion orientation{1, 0, 0, 0};  // w, x, y, z
 };
 
 class SceneEngine {
@@ -30,6 +31,8 @@ public:
     virtual const PlasticJointLaw* joint_law(std::size_t index) const = 0;
     // The generalised forces the joint's rows applied to its body b in the last step [N, N·m].
     virtual PerDof<double> joint_forces(std::size_t index) const = 0;
+    // The joint's dof positions now: b relative to a in the joint frame [m, rad].
+    virtual PerDof<double> joint_positions(std::size_t index) = 0;
 };
 
 // The engines this build has, by --engine name.

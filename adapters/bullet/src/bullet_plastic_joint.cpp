@@ -68,7 +68,7 @@ void BasicBulletPlasticJoint<Constraint>::attach(btDynamicsWorld& world, double 
     for (Dof dof : kAllDofs) {  // rigid dofs lock where the joint takes hold
         const int i = static_cast<int>(index(dof));
         const double at = is_rotation(dof) ? -x[index(dof)] : x[index(dof)];  // Bullet's angle sign
-        if (law_.mode(dof) == DofMode::Rigid) constraint_->setLimit(i, at, at);
+        if (law_.mode(dof) == DofMode::Rigid) bullet_rows::lock(*constraint_, i, at);
     }
     world.addConstraint(&*constraint_, /*disableCollisionsBetweenLinkedBodies=*/true);
     world.addAction(this);

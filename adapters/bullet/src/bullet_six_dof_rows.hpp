@@ -51,6 +51,17 @@ inline void set_motor(btGeneric6DofConstraint& c, int axis, bool on, double velo
     }
 }
 
+// Locks an axis at `at` (Bullet's sign for angles). Spring2 treats lo == hi as a lock; the first
+// constraint adds a limit row only once the position has left [lo, hi], so a body would move freely
+// for a step before it took hold: an unbounded motor at zero velocity holds it meanwhile (Bullet
+// switches the motor off while the limit row acts).
+inline void lock(btGeneric6DofSpring2Constraint& c, int axis, double at) { c.setLimit(axis, at, at); }
+
+inline void lock(btGeneric6DofConstraint& c, int axis, double at) {
+    c.setLimit(axis, at, at);
+    set_motor(c, axis, true, 0.0, BT_LARGE_FLOAT);
+}
+
 inline void disable_springs(btGeneric6DofSpring2Constraint& c, int axis) { c.enableSpring(axis, false); }
 inline void disable_springs(btGeneric6DofSpringConstraint& c, int axis) { c.enableSpring(axis, false); }
 

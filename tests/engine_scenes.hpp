@@ -1,11 +1,15 @@
 #pragma once
-// Small Bullet set-ups shared by the adapter tests: a block hanging from the world on a plastic
-// joint whose N dof is plastic (the others rigid), and a rod cantilevered from the world whose Mz dof
-// is plastic. `turn` rotates the whole set-up (gravity, body, joint frame) for the invariance tests.
+// Small scenes for the analytic tests of every engine adapter, built as plastic-sim Scenes and run
+// through SceneEngine, so the same test runs on Bullet (both 6-dof constraints) and ODE: a block
+// hanging from the world on a joint whose N dof is plastic (the others rigid), and a rod
+// cantilevered from the world whose Mz dof is plastic. `turn` rotates the whole set-up (gravity,
+// body, joint frame) for the invariance tests.
+#include <cmath>
+#include <optional>
+#include <string>
 #include <vector>
 
-#include "plascap/adapters/bullet_plastic_joint.hpp"
-#include "plascap/adapters/bullet_world.hpp"
+#include "scene_engine.hpp"
 
 namespace plascap::test {
 
@@ -15,27 +19,30 @@ struct Trace {
     double broken_at = -1.0;
 };
 
+struct Turn {
+    Vec3 axis{0, 0, 1};  // unit
+    double angle = 0.0;  // [rad]
+};
+
 struct HangingBlock {
     double mass = 1.0, g = 10.0, capacity = 20.0, dt = 0.01;
     std::optional<double> stiffness;
     double max_plastic_displacement = INFINITY;
     int iterations = 10, steps = 300, engage_after_steps = 0;
-    btQuaternion turn = btQuaternion::getIdentity();
-    bool spring1 = false;  // drive a btGeneric6DofSpringConstraint instead of Spring2
+    Turn turn;
 };
 
 struct Cantilever {
     double mass = 2.0, length = 1.0, thickness = 0.05, g = 10.0, capacity = 20.0, dt = 0.01;
     std::optional<double> stiffness;
     int iterations = 20, steps = 300;
-    btQuaternion turn = btQuaternion::getIdentity();
-    bool spring1 = false;  // drive a btGeneric6DofSpringConstraint instead of Spring2
+    Turn turn;
     double inertia_about_anchor() const {
         return mass * (length * length + thickness * thickness) / 12.0 + mass * length * length / 4.0;
     }
 };
 
-Trace run(const HangingBlock& scene);
-Trace run(const Cantilever& scene);
+Trace run(const std::string& engine, const HangingBlock& scene);
+Trace run(const std::string& engine, const Cantilever& scene);
 
 }  // namespace plascap::test

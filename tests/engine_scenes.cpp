@@ -1,0 +1,130 @@
+#include "engine_scenes.hpp"
+
+#include <cmath>
+
+namespace plascap::test {
+namespace {
+
+using Mat = std::array<Vec3, 3>;  // rows
+
+Mat rotation(const Turn& t) {  // Rodrigues
+    const double c = std::cos(t.angle), s = std::sin(t.angle), C = 1 - c;
+    const auto& [x, y, z] = t.axis;
+    return {{{c + x * x * C, x * y * C - z * s, x * z * C + y * s},
+             {y * x * C + z * s, c + y * y * C, y * z * C - x * s},
+             {z * x * C - y * s, z * y * C + x * s, c + z * z * C}}};
+}
+
+Quaternion quaternion(const Turn& t) {
+    const double s = std::sin(t.angle / 2);
+    return {std::cos(t.angle / 2), s * t.axis[0], s * t.axis[1], s * t.axis[2]};
+}
+
+Vec3 rotate(const Mat& m, const Vec3& v) {
+    Vec3 r{};
+    for (int i = 0; i < 3; ++i) r[i] = m[i][0] * v[0] + m[i][1] * v[1] + m[i][2] * v[2];
+    return r;
+}
+
+double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+Mat from_quaternion(const Quaternion& q) {
+    const double w = q[0], x = q[1], y = q[2], z = q[3];
+    return {{{1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)},
+             {2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)},
+             {2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)}}};
+}
+
+// ½·m·v² + ½·ωᵀ·I·ω of a box, I from its edges and orientation.
+double kinetic_energy(const SceneBody& body, const BodyState& s) {
+    const double m = body.mass;
+    const auto& [a, b, c] = body.size;
+    const Vec3 principal = {m * (b * b + c * c) / 12, m * (a * a + c * c) / 12, m * (a * a + b * b) / 12};
+    const Mat r = from_quaternion(s.orientation);
+    const Vec3 w_body = {dot({r[0][0], r[1][0], r[2][0]}, s.angular_velocity), dot({r[0][1], r[1][1], r[2][1]}, s.angular_velocity),
+                         dot({r[0][2], r[1][2], r[2][2]}, s.angular_velocity)};
+    double rotational = 0.0;
+    for (int i = 0; i < 3; ++i) rotational += principal[i] * w_body[i] * w_body[i];
+    return 0.5 * m * dot(s.velocity, s.velocity) + 0.5 * rotational;
+}
+
+Scene one_body_one_joint(double dt, int steps, int iterations, double g, const Turn& turn, SceneBody body, Mat frame,
+                         Dof plastic, const DofLaw& law) {
+    const Mat r = rotation(turn);
+    Scene s;
+    s.dt = dt;
+    s.duration = steps * dt;
+    s.iterations = iterations;
+    const Vec3 up = rotate(r, {0, 1, 0});
+    s.gravity = {-g * up[0], -g * up[1], -g * up[2]};
+    body.position = rotate(r, body.position);
+    body.orientation = quaternion(turn);
+    s.bodies = {body};
+    SceneJoint j;
+    j.name = "joint";
+    j.b = 0;
+    j.anchor = {0, 0, 0};
+    for (std::size_t k = 0; k < 3; ++k) j.axes[k] = rotate(r, {frame[0][k], frame[1][k], frame[2][k]});
+    j.settings.modes.fill(DofMode::Rigid);
+    j.settings.modes[index(plastic)] = DofMode::Plastic;
+    j.settings.laws[index(plastic)] = law;
+    s.joints = {j};
+    return s;
+}
+
+Trace record(const std::string& engine_name, const Scene& scene, Dof dof, const Turn& turn, double g) {
+    const std::unique_ptr<SceneEngine> engine = make_engine(engine_name, scene);
+    const Vec3 up = rotate(rotation(turn), {0, 1, 0});
+    const double y0 = dot(scene.bodies[0].position, up);
+    Trace t;
+    for (std::size_t i = 0; i < scene.steps(); ++i) {
+        engine->step();
+        const BodyState s = engine->body(0);
+        const PlasticJointLaw* joint = engine->joint_law(0);
+        const PerDof<double> x = joint ? engine->joint_positions(0) : PerDof<double>{};
+        const ElasticPlasticLaw* law = joint ? joint->law(dof) : nullptr;
+        const double y = dot(s.position, up);
+        t.time.push_back(engine->time());
+        t.position.push_back(x[index(dof)]);
+        t.force.push_back(joint ? engine->joint_forces(0)[index(dof)] : 0.0);
+        t.plastic.push_back(law ? law->accumulated_plastic() : 0.0);
+        t.dissipated.push_back(law ? law->dissipated() : 0.0);
+        t.elastic.push_back(joint ? joint->elastic_energy(x) : 0.0);
+        t.body_y.push_back(y);
+        t.energy.push_back(kinetic_energy(scene.bodies[0], s) + scene.bodies[0].mass * g * (y - y0) + t.elastic.back() +
+                           t.dissipated.back());
+        if (joint && joint->broken() && t.broken_at < 0) t.broken_at = *joint->broken_at();
+    }
+    return t;
+}
+
+}  // namespace
+
+Trace run(const std::string& engine, const HangingBlock& h) {
+    SceneBody block;
+    block.name = "block";
+    block.size = {0.2, 0.2, 0.2};
+    block.mass = h.mass;
+    block.position = {0, -0.5, 0};
+    Scene s = one_body_one_joint(h.dt, h.steps, h.iterations, h.g, h.turn, block, {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}},
+                                 Dof::N, DofLaw{h.capacity, h.capacity, h.stiffness});
+    s.joints[0].settings.max_plastic_displacement = h.max_plastic_displacement;
+    s.joints[0].engage_at = h.engage_after_steps * h.dt;  // the paper's joint acts from step 2
+    return record(engine, s, Dof::N, h.turn, h.g);
+}
+
+Trace run(const std::string& engine, const Cantilever& c) {
+    // The rod lies along world x from the anchor; the joint's beam axis y is the rod's axis and its
+    // x axis is world up, so z = x × y = −world z and gravity bends the rod about +z: the Mz dof.
+    SceneBody rod;
+    rod.name = "rod";
+    rod.size = {c.length, c.thickness, c.thickness};
+    rod.mass = c.mass;
+    rod.position = {c.length / 2, 0, 0};
+    const Scene s = one_body_one_joint(c.dt, c.steps, c.iterations, c.g, c.turn, rod,
+                                       {{{0, 1, 0}, {1, 0, 0}, {0, 0, -1}}},  // columns x, y, z
+                                       Dof::Mz, DofLaw{c.capacity, c.capacity, c.stiffness});
+    return record(engine, s, Dof::Mz, c.turn, c.g);
+}
+
+}  // namespace plascap::test
