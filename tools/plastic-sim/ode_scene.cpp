@@ -2,6 +2,10 @@
 // OdePlasticJoint, collisions through a hash space with contacts of friction 0.25 and no bounce
 // (Bullet's default: 0.5 per body, multiplied).
 #include <algorithm>
+#include <cstdarg>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
 #include <memory>
 #include <set>
 #include <utility>
@@ -17,14 +21,45 @@ namespace {
 constexpr double kFriction = 0.25;
 constexpr int kMaxContacts = 8;
 
+// ODE reports through process-wide handlers. Errors and failed internal assertions would abort():
+// they become exceptions (plastic-sim exits 1 with the message). Messages (e.g. the Dantzig LCP's
+// "internal error, s <= 0", after which ODE carries on with a degraded step) are counted and shown.
+struct OdeMessages {
+    std::size_t count = 0;
+    std::string first;
+};
+OdeMessages& ode_messages() {
+    static OdeMessages messages;
+    return messages;
+}
+
+std::string format(int number, const char* text, va_list ap) {
+    char buffer[512];
+    std::vsnprintf(buffer, sizeof buffer, text, ap);
+    return "ODE " + std::to_string(number) + ": " + buffer;
+}
+
+void throw_error(int number, const char* text, va_list ap) { throw std::runtime_error(format(number, text, ap)); }
+
+void count_message(int number, const char* text, va_list ap) {
+    OdeMessages& m = ode_messages();
+    if (m.count++ == 0) m.first = format(number, text, ap);
+}
+
 struct OdeLibrary {
-    OdeLibrary() { dInitODE2(0); }
+    OdeLibrary() {
+        dInitODE2(0);
+        dSetErrorHandler(&throw_error);
+        dSetDebugHandler(&throw_error);
+        dSetMessageHandler(&count_message);
+    }
 };
 
 class OdeScene : public SceneEngine {
 public:
     OdeScene(const Scene& scene, bool quick) : scene_(scene), quick_(quick), schedule_(scene) {
         static OdeLibrary library;  // dInitODE2 once per process
+        ode_messages() = {};
         world_ = dWorldCreate();
         dWorldSetGravity(world_, scene.gravity[0], scene.gravity[1], scene.gravity[2]);
         dWorldSetQuickStepNumIterations(world_, scene.iterations);
@@ -99,6 +134,13 @@ public:
 
     PerDof<double> joint_forces(std::size_t index) const override { return joints_[index]->forces(); }
     PerDof<double> joint_positions(std::size_t index) override { return joints_[index]->positions(); }
+
+    std::vector<std::string> warnings() const override {
+        const OdeMessages& m = ode_messages();
+        if (m.count == 0) return {};
+        return {std::to_string(m.count) + " message(s) from ODE, the first: \"" + m.first +
+                "\"; the steps concerned are unreliable"};
+    }
 
 private:
     void add_body(const SceneBody& b) {

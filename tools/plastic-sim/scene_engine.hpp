@@ -33,6 +33,9 @@ public:
     virtual PerDof<double> joint_forces(std::size_t index) const = 0;
     // The joint's dof positions now: b relative to a in the joint frame [m, rad].
     virtual PerDof<double> joint_positions(std::size_t index) = 0;
+    // What the engine reported as going wrong but survived (e.g. ODE's "LCP internal error"): the
+    // results may be unreliable. An engine error it cannot survive is thrown as std::runtime_error.
+    virtual std::vector<std::string> warnings() const { return {}; }
 };
 
 // The engines this build has, by --engine name.

@@ -50,6 +50,7 @@ SimulationResult run_simulation(const Scene& scene, SceneEngine& engine, const S
     result.wall_seconds = seconds_since(start);
     for (std::size_t i = 0; i < scene.bodies.size(); ++i) result.bodies.push_back(engine.body(i));
     for (std::size_t j = 0; j < scene.joints.size(); ++j) result.joints.push_back(summarise(engine.joint_law(j)));
+    result.warnings = engine.warnings();
     return result;
 }
 

@@ -24,6 +24,7 @@ struct SimulationResult {
     double wall_seconds = 0.0;
     std::vector<BodyState> bodies;
     std::vector<JointSummary> joints;
+    std::vector<std::string> warnings;  // from the engine
 };
 
 struct SimulationOptions {

@@ -49,6 +49,7 @@ void write_json_summary(std::ostream& out, const Scene& scene, const SimulationR
     j["steps"] = r.steps;
     j["engine"] = engine;
     j["wall_seconds"] = r.wall_seconds;
+    j["warnings"] = r.warnings;
     j["bodies"] = nlohmann::json::object();
     for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
         j["bodies"][scene.bodies[i].name] = {{"position", r.bodies[i].position}, {"velocity", r.bodies[i].velocity},
@@ -74,6 +75,7 @@ void write_text_summary(std::ostream& out, const Scene& scene, const SimulationR
     out << "time: " << r.time << " s in " << r.steps << " steps of " << scene.dt << " s (" << std::fixed
         << std::setprecision(3) << r.wall_seconds << " s of wall time)\n"
         << std::defaultfloat;
+    for (const std::string& w : r.warnings) out << "warning: " << w << '\n';
     out << "\nbodies                position [m]                              velocity [m/s]\n";
     for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
         out << "  " << std::left << std::setw(18) << scene.bodies[i].name << std::right;

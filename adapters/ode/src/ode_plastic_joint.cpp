@@ -9,9 +9,13 @@ namespace plascap {
 namespace {
 
 // As in the Bullet adapter: a Push row asks for an unreachable speed and so ends on its bound.
-constexpr double kPushSpeed = 1e9;
+constexpr double kPushSpeed = 1e4;
 // Makes a contact joint's normal row inert: its force is (error)/(CFM) ≈ 0.
-constexpr double kInertCfm = 1e12;
+constexpr double kInertCfm = 1e3;
+// The bound of a rigid row. Not dInfinity: a contact joint counts a friction row with an infinite
+// bound as unbounded and ODE's dWorldStep then takes its (bounded) normal row for unbounded too and
+// fails an assertion inside its LCP solver.
+constexpr double kUnbounded = 1e12;  // [N, N·m]
 
 Pose pose_of(dBodyID body) {
     Pose p;
@@ -54,7 +58,7 @@ struct RowSetting {
 RowSetting row_setting(DofMode mode, const std::optional<RowCommand>& command, double position, double reference,
                        double dt) {
     if (mode == DofMode::Free) return {};
-    if (mode == DofMode::Rigid) return {-kHoldCorrection * (position - reference) / dt, dInfinity};
+    if (mode == DofMode::Rigid) return {-kHoldCorrection * (position - reference) / dt, kUnbounded};
     if (command->kind == RowCommand::Kind::Hold) return {command->velocity, command->bound};
     return {command->force > 0.0 ? kPushSpeed : -kPushSpeed, std::abs(command->force)};
 }
