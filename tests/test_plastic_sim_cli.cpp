@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -21,8 +22,8 @@ CliRun plastic_sim(const std::string& arguments) { return plascap::test::run_too
 
 std::string scene(const std::string& name) { return "\"" + kSource + "/examples/scenes/" + name + "\""; }
 
-Json run_json(const std::string& name) {
-    const CliRun run = plastic_sim("--json --quiet " + scene(name));
+Json run_json(const std::string& name, const std::string& engine = "bullet") {
+    const CliRun run = plastic_sim("--json --quiet --engine " + engine + " " + scene(name));
     EXPECT_EQ(run.exit_code, 0) << run.err;
     EXPECT_EQ(run.err, "");
     return Json::parse(run.out);
@@ -67,6 +68,50 @@ TEST(PlasticSim, StackCollapsesStoreyByStorey) {
     ASSERT_GE(breaks.size(), 2u);
     std::sort(breaks.begin(), breaks.end());
     EXPECT_GT(breaks[1] - breaks[0], 0.1);  // one after another, not at once
+}
+
+bool has_engine(const std::string& name) {
+    const std::string list = plastic_sim("--list-engines").out;
+    return list.find(name + "\n") != std::string::npos;
+}
+
+// Issue 7: every example gives the same plastic deformation, dissipated energy and break times on
+// Bullet and ODE (dWorldQuickStep), within a tolerance stated per scene.
+TEST(PlasticSim, EveryExampleAgreesAcrossBulletAndOde) {
+    if (!has_engine("ode")) GTEST_SKIP() << "this build has no ODE adapter";
+    struct Agreement {
+        const char* scene;
+        double tolerance;  // on plastic displacement, rotation and dissipated energy, relative to the largest joint's
+        const char* why;
+    };
+    const Agreement agreements[] = {
+        {"paper-tension-block.json", 1e-3, "one rigid-plastic row: both engines solve it exactly"},
+        {"cantilever-bending.json", 1e-3, "explicit elastic-plastic rows: no solver in the loop"},
+        {"collapsing-stack.json", 0.15, "rigid-plastic rows under contact; break times must match to one step"},
+        {"charpy-impact.json", 0.35, "decided by contacts, which the engines model differently (docs/cross-engine.md)"},
+    };
+    for (const Agreement& a : agreements) {
+        const Json bullet = run_json(a.scene, "bullet"), ode = run_json(a.scene, "ode");
+        const char* keys[] = {"plastic_displacement", "plastic_rotation", "dissipated"};
+        std::map<std::string, double> largest;
+        for (const auto& joint : bullet["joints"]) {
+            for (const char* key : keys) largest[key] = std::max(largest[key], std::abs(joint[key].get<double>()));
+        }
+        for (const auto& [name, joint] : bullet["joints"].items()) {
+            const Json& other = ode["joints"][name];
+            for (const char* key : keys) {
+                const double x = joint[key].get<double>(), y = other[key].get<double>();
+                EXPECT_LE(std::abs(x - y), a.tolerance * largest[key])
+                    << a.scene << ", " << name << ", " << key << ": bullet " << x << ", ode " << y << " (" << a.why << ")";
+            }
+            ASSERT_EQ(joint["broken"], other["broken"]) << a.scene << ", " << name;
+            if (joint["broken"].get<bool>()) {
+                const double dt = a.scene == std::string("collapsing-stack.json") ? 1.0 / 240 : 0.0;
+                EXPECT_LE(std::abs(joint["broken_at"].get<double>() - other["broken_at"].get<double>()), dt + 1e-9)
+                    << a.scene << ", " << name;
+            }
+        }
+    }
 }
 
 TEST(PlasticSim, CsvTraceHasAHeaderAndOneRowPerStep) {

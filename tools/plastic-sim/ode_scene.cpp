@@ -60,6 +60,7 @@ public:
     OdeScene(const Scene& scene, bool quick) : scene_(scene), quick_(quick), schedule_(scene) {
         static OdeLibrary library;  // dInitODE2 once per process
         ode_messages() = {};
+        dRandSetSeed(0);  // QuickStep reorders rows at random: the same scene gives the same run
         world_ = dWorldCreate();
         dWorldSetGravity(world_, scene.gravity[0], scene.gravity[1], scene.gravity[2]);
         dWorldSetQuickStepNumIterations(world_, scene.iterations);

@@ -90,15 +90,26 @@ OdePlasticJoint::OdePlasticJoint(dWorldID world, dBodyID a, dBodyID b, const Pos
         dJointSetFeedback(rotations_, &rotation_feedback_);
     }
     translations_ = dJointGroupCreate(0);
+    if (law_.mode(Dof::Qx) == DofMode::Rigid && law_.mode(Dof::N) == DofMode::Rigid && law_.mode(Dof::Qz) == DofMode::Rigid) {
+        ball_ = dJointCreateBall(world_, nullptr);
+        dJointAttach(ball_, b_, a_);
+        dJointSetBallAnchor(ball_, frame_in_world.origin[0], frame_in_world.origin[1], frame_in_world.origin[2]);
+        dJointSetFeedback(ball_, &ball_feedback_);
+    }
 }
 
 OdePlasticJoint::~OdePlasticJoint() {
     if (rotations_) dJointDestroy(rotations_);
+    if (ball_) dJointDestroy(ball_);
     dJointGroupDestroy(translations_);
 }
 
 void OdePlasticJoint::engage(double now) {
     time_ = now;
+    if (ball_) {  // hold the anchor where it is now
+        const JointFrameState state = measure();
+        dJointSetBallAnchor(ball_, state.axes.anchor[0], state.axes.anchor[1], state.axes.anchor[2]);
+    }
     reference_ = measure().positions;
     law_.start(reference_);
 }
@@ -142,6 +153,7 @@ void OdePlasticJoint::set_rotation_rows(const JointFrameState& state, const PerD
 
 void OdePlasticJoint::set_translation_rows(const JointFrameState& state,
                                            const PerDof<std::optional<RowCommand>>& commands, double dt) {
+    if (ball_) return;  // the ball holds all three
     dJointGroupEmpty(translations_);
     translation_joints_ = 0;
     std::array<RowSetting, 3> rows;
@@ -178,6 +190,7 @@ void OdePlasticJoint::set_translation_rows(const JointFrameState& state,
 
 void OdePlasticJoint::disable_rows() {
     if (rotations_) dJointDisable(rotations_);
+    if (ball_) dJointDisable(ball_);
     dJointGroupEmpty(translations_);
     translation_joints_ = 0;
 }
@@ -187,6 +200,7 @@ void OdePlasticJoint::after_step(double dt) {
     if (law_.broken()) return;
     WorldLoad load;
     if (rotations_) add(load, rotation_feedback_);
+    if (ball_) add(load, ball_feedback_);
     for (int i = 0; i < translation_joints_; ++i) add(load, translation_feedback_[i]);
     forces_ = joint_frame_loads(load, planned_centre_of_b_, planned_axes_);
     if (law_.settle(measure().positions, forces_, time_)) disable_rows();  // broken stays broken

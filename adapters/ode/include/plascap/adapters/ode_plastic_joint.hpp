@@ -6,7 +6,8 @@
 //   translations: ODE's LMotor applies its rows at the midpoint between the bodies' centres, not at
 //     the anchor, so the translation rows are the two tangential rows of contact joints placed at
 //     the anchor each step (their bounds are forces, their target velocities set; the contact's own
-//     normal row is made inert with a huge CFM). A row at the anchor is what a joint is.
+//     normal row is made inert with a large CFM). A row at the anchor is what a joint is. When all
+//     three translations are rigid, one ball-and-socket joint at the anchor does it more cheaply.
 // Rigid dofs are rows with unbounded force and a Baumgarte target (ERP kHoldCorrection); free dofs
 // get no row. Feedback (dJointFeedback, world frame, torque about b's centre) of all of them is
 // summed and turned into joint-frame dof forces. A broken joint's rows are disabled for good.
@@ -52,6 +53,8 @@ private:
     dBodyID a_, b_;
     Pose frame_on_a_, frame_on_b_;  // in a's and b's body coordinates (a = world: world coordinates)
     dJointID rotations_ = nullptr;
+    dJointID ball_ = nullptr;  // all translations rigid
+    dJointFeedback ball_feedback_{};
     dJointGroupID translations_ = nullptr;
     dJointFeedback rotation_feedback_{};
     std::array<dJointFeedback, 2> translation_feedback_{};
