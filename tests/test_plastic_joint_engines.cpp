@@ -54,10 +54,10 @@ TEST_P(Engine, RigidPlasticAboveCapacityAcceleratesDissipatesAndBreaks) {
     EXPECT_NEAR(t.dissipated[n - 1], s.capacity * t.plastic[n - 1], 1e-6 * t.dissipated[n - 1]);  // F × plastic
     // 0.5 m has flowed first at n = 50 (t = 0.50 s); then it falls freely and stays broken.
     ASSERT_GT(t.broken_at, 0.0);
-    EXPECT_NEAR(t.broken_at, 0.50, 1e-9);
+    EXPECT_NEAR(t.broken_at, 0.50, 1e-6);  // a float build of Bullet sums its float step
     const std::size_t last = t.body_y.size() - 1;
     const double accel = (t.body_y[last] - 2 * t.body_y[last - 1] + t.body_y[last - 2]) / (s.dt * s.dt);
-    EXPECT_NEAR(accel, -s.g, 1e-6 * s.g);
+    EXPECT_NEAR(accel, -s.g, 1e-3 * s.g);  // a second difference of positions: float builds round at 5e-4
 }
 
 TEST_P(Engine, ElasticOscillatorPeaksAtTwiceTheStaticDeflection) {
