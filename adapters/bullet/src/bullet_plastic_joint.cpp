@@ -56,7 +56,7 @@ void BasicBulletPlasticJoint<Constraint>::set_up_rows() {
                 break;
         }
         bullet_rows::set_motor(*constraint_, i, law_.mode(dof) == DofMode::Plastic, 0.0, 0.0);
-        bullet_rows::disable_springs(*constraint_, i);
+        constraint_->enableSpring(i, false);  // both constraints: never Bullet's own springs
     }
 }
 

@@ -62,7 +62,5 @@ inline void lock(btGeneric6DofConstraint& c, int axis, double at) {
     set_motor(c, axis, true, 0.0, BT_LARGE_FLOAT);
 }
 
-inline void disable_springs(btGeneric6DofSpring2Constraint& c, int axis) { c.enableSpring(axis, false); }
-inline void disable_springs(btGeneric6DofSpringConstraint& c, int axis) { c.enableSpring(axis, false); }
 
 }  // namespace plascap::bullet_rows

@@ -15,8 +15,8 @@ const char* regime_name(Regime regime) {
 
 double spring_omega_dt(std::optional<double> stiffness, double effective_mass, double dt) {
     if (!stiffness) return 0.0;
-    if (!(effective_mass > 0.0) || std::isinf(effective_mass)) return std::isinf(effective_mass) ? 0.0 : INFINITY;
-    return std::sqrt(*stiffness / effective_mass) * dt;  // ω·dt, ω = √(k/m)
+    if (!(effective_mass > 0.0)) return INFINITY;
+    return std::sqrt(*stiffness / effective_mass) * dt;  // ω·dt, ω = √(k/m); 0 for an immovable row
 }
 
 Regime choose_regime(std::optional<double> stiffness, double effective_mass, double dt) {

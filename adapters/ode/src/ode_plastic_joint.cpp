@@ -126,7 +126,8 @@ PerDof<double> OdePlasticJoint::effective_masses(const JointAxesInWorld& axes) c
 
 void OdePlasticJoint::before_step(double dt) {
     if (law_.broken()) return;
-    const JointFrameState state = measure();
+    const JointFrameState state = measured_ ? *measured_ : measure();  // the end of a step is the start of the next
+    measured_.reset();
     planned_axes_ = state.axes;
     const dReal* centre = dBodyGetPosition(b_);
     planned_centre_of_b_ = {centre[0], centre[1], centre[2]};
@@ -203,7 +204,8 @@ void OdePlasticJoint::after_step(double dt) {
     if (ball_) add(load, ball_feedback_);
     for (int i = 0; i < translation_joints_; ++i) add(load, translation_feedback_[i]);
     forces_ = joint_frame_loads(load, planned_centre_of_b_, planned_axes_);
-    if (law_.settle(measure().positions, forces_, time_)) disable_rows();  // broken stays broken
+    measured_ = measure();
+    if (law_.settle(measured_->positions, forces_, time_)) disable_rows();  // broken stays broken
 }
 
 }  // namespace plascap

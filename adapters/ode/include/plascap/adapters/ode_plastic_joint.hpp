@@ -18,6 +18,7 @@
 #include <ode/ode.h>
 
 #include <array>
+#include <optional>
 
 #include "plascap/adapters/joint_frame.hpp"
 #include "plascap/adapters/plastic_joint_law.hpp"
@@ -65,6 +66,7 @@ private:
     Vec3 planned_centre_of_b_{};
     PerDof<double> forces_{};
     PerDof<double> reference_{};  // positions when it took hold: where rigid dofs are held
+    std::optional<JointFrameState> measured_;  // after_step's state: the next before_step's start
     double time_ = 0.0;
 };
 
