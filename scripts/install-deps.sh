@@ -8,6 +8,7 @@ packages=(
   libcgal-dev libgmp-dev libmpfr-dev   # exact geometry (validation; meshing later)
   libgsl-dev                           # cubature
   libeigen3-dev                        # linear algebra
+  libboost-dev                         # Boost.Geometry R-tree (sand-heap distances)
   libbullet-dev                        # Bullet 3.24, float and float64 builds
   libode-dev                           # ODE 0.16, double precision
   libgtest-dev libgmock-dev            # tests

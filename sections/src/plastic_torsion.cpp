@@ -5,6 +5,7 @@
 #include <limits>
 #include <vector>
 
+#include "boundary_distance.hpp"
 #include "planar_distance.hpp"
 #include "plascap/input_error.hpp"
 #include "plascap/sections/ring_integrals.hpp"
@@ -47,17 +48,12 @@ std::vector<double> plateaus(const Part& part) {
 // φ(p) = min(d(p, outer), min_k (c_k + d(p, hole_k))).
 class SandHeap final : public detail::Integrand {
 public:
-    SandHeap(const Part& part, std::vector<double> plateau) : part_(part), plateau_(std::move(plateau)) {}
-    double operator()(Point p) const override {
-        double phi = distance_to_ring(p, part_.outer);
-        for (std::size_t k = 0; k < part_.holes.size(); ++k) phi = std::min(phi, plateau_[k] + distance_to_ring(p, part_.holes[k]));
-        return phi;
-    }
+    SandHeap(const Part& part, const std::vector<double>& plateau) : height_(part, plateau) {}
+    double operator()(Point p) const override { return height_(p); }
     detail::PolynomialDegree degree_on(const detail::Triangle&) const override { return {}; }
 
 private:
-    const Part& part_;
-    std::vector<double> plateau_;
+    detail::BoundaryDistance height_;
 };
 
 // ∫φ over the part's triangles by the given rule, plus the hole plateaus: the heap's volume.

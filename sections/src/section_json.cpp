@@ -10,6 +10,7 @@
 #include "plascap/json_message.hpp"
 #include "plascap/materials/material_json.hpp"
 #include "plascap/materials/mixture.hpp"
+#include "plascap/sections/shape_designation.hpp"
 
 namespace plascap {
 namespace {
@@ -117,7 +118,7 @@ json parse_json(std::string_view text) {
 Section parse_section_json(std::string_view text, const MaterialCatalogue& catalogue) {
     const json root = parse_json(text);
     if (!root.is_object()) fail("section", "expected a JSON object with \"parts\", got " + type_name(root));
-    reject_unknown_keys(root, "section", {"shear", "reference", "material", "parts", "name", "description"});
+    reject_unknown_keys(root, "section", {"shear", "reference", "material", "parts", "shape", "name", "description"});
 
     Section section;
     if (root.contains("shear")) {
@@ -132,7 +133,18 @@ Section parse_section_json(std::string_view text, const MaterialCatalogue& catal
     std::optional<Material> default_material;
     if (root.contains("material")) default_material = read_material(root["material"], "material", catalogue);
 
-    if (!root.contains("parts")) fail("section", "has no \"parts\"");
+    if (root.contains("shape")) {  // a standard shape by name instead of parts (docs/shapes.md)
+        if (root.contains("parts")) fail("shape", "give \"shape\" or \"parts\", not both");
+        if (!root["shape"].is_string()) fail("shape", "expected a designation such as \"HEB 200\", got " + type_name(root["shape"]));
+        if (!default_material) fail("shape", "a shape needs a \"material\" (a catalogue name such as \"S355\" or an object)");
+        try {
+            section.parts = shape_section(root["shape"].get<std::string>(), *default_material).parts;
+        } catch (const InputError& e) {
+            fail("shape", e.what());
+        }
+        return section;
+    }
+    if (!root.contains("parts")) fail("section", "has no \"parts\" (or \"shape\")");
     const json& parts = root["parts"];
     if (!parts.is_array()) fail("parts", "expected an array of parts, got " + type_name(parts));
     for (std::size_t p = 0; p < parts.size(); ++p)

@@ -1,0 +1,61 @@
+#include "plascap/sections/shape_table.hpp"
+
+#include <atomic>
+#include <exception>
+#include <mutex>
+#include <thread>
+
+#include "plascap/sections/valid_section.hpp"
+
+namespace plascap {
+
+ShapeTableRow shape_table_row(const CatalogueShape& shape, const Material& material, const ShapeTableOptions& options) {
+    const ValidSection section = validate_section(shape_section(shape.geometry, material, options.shape));
+    ShapeTableRow row;
+    row.shape = &shape;
+    row.vertices = section.vertex_count();
+    row.elastic = elastic_properties(section);
+    row.capacities = compute_capacities(section);
+    row.Wpl_x = *row.capacities.Mx / material.fy;  // Mx = fy·Wpl for one material (eq. 2.12)
+    row.Wpl_z = *row.capacities.Mz / material.fy;
+    if (options.torsion) {
+        row.J = saint_venant_torsion(section, options.J_options);
+        row.T_p = plastic_torsion(validate_section(shape_section(shape.geometry, material, options.T_p_shape)),
+                                  options.T_p_options);
+    }
+    return row;
+}
+
+std::vector<ShapeTableRow> shape_table(const std::vector<const CatalogueShape*>& shapes, const Material& material,
+                                       const ShapeTableOptions& options) {
+    std::vector<ShapeTableRow> rows(shapes.size());
+    std::atomic<std::size_t> next{0};
+    std::size_t done = 0;
+    std::mutex report;
+    std::exception_ptr failure;
+    const auto work = [&] {
+        for (std::size_t i; (i = next++) < shapes.size();) {
+            try {
+                rows[i] = shape_table_row(*shapes[i], material, options);
+            } catch (...) {
+                const std::lock_guard<std::mutex> lock(report);
+                if (!failure) failure = std::current_exception();
+                next = shapes.size();  // the others stop after their current row
+                return;
+            }
+            const std::lock_guard<std::mutex> lock(report);
+            ++done;
+            if (options.progress) options.progress(done, shapes.size());
+        }
+    };
+    unsigned threads = options.threads != 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+    threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(1, shapes.size())));
+    std::vector<std::thread> workers;
+    for (unsigned t = 1; t < threads; ++t) workers.emplace_back(work);
+    work();
+    for (std::thread& w : workers) w.join();
+    if (failure) std::rethrow_exception(failure);
+    return rows;
+}
+
+}  // namespace plascap
