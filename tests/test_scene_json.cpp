@@ -86,6 +86,18 @@ struct BadScene {
 
 class BadScenes : public ::testing::TestWithParam<BadScene> {};
 
+// A joint named by its standard shape: the capacities of the EN 10365 HEB 200 in S355
+// (Wpl,y 642.5 cm³ and Wpl,z 305.8 cm³ as tabulated; N = fy·A, A = 78.08 cm²).
+TEST(SceneJson, JointFromAShapeName) {
+    const Scene s = parse_scene_json(scene_with(R"("shape": "HE 200 B", "material": "S355")"));
+    const SceneJoint& j = s.joints[0];
+    EXPECT_NEAR(j.settings.laws[index(Dof::N)].capacity_positive / 355e6, 78.08e-4, 0.005 * 78.08e-4);
+    EXPECT_NEAR(j.settings.laws[index(Dof::Mx)].capacity_positive / 355e6, 642.5e-6, 0.005 * 642.5e-6);
+    EXPECT_NEAR(j.settings.laws[index(Dof::Mz)].capacity_positive / 355e6, 305.8e-6, 0.005 * 305.8e-6);
+    EXPECT_NE(error_of(scene_with(R"("shape": "HEB 210", "material": "S355")")).find("did you mean HEB 200"), std::string::npos);
+    EXPECT_NE(error_of(scene_with(R"("shape": "HEB 200")")).find("a shape needs a \"material\""), std::string::npos);
+}
+
 TEST_P(BadScenes, AreRefusedWithAMessageNamingTheProblem) {
     EXPECT_NE(error_of(GetParam().text).find(GetParam().message), std::string::npos)
         << GetParam().what << ": " << error_of(GetParam().text);
@@ -104,7 +116,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{"mass and density", scene_with(R"("capacities": {"N": 1})", R"("mass": 1, "density": 2)"), "exactly one of \"mass\" and \"density\""},
         BadScene{"overflowing number", scene_with(R"("capacities": {"N": 1e999})"), "number overflow parsing '1e999'"},
         BadScene{"negative capacity", scene_with(R"("capacities": {"N": -5})"), "capacities.N: must be positive"},
-        BadScene{"no strength", scene_with(R"("dofs": {"N": "plastic"})"), "exactly one of \"capacities\" and \"section\""},
+        BadScene{"no strength", scene_with(R"("dofs": {"N": "plastic"})"), "exactly one of \"capacities\", \"section\" and \"shape\""},
         BadScene{"plastic without capacity", scene_with(R"("capacities": {"N": 1}, "dofs": {"Mx": "plastic"})"), "dofs.Mx: a plastic dof needs its capacity"},
         BadScene{"unknown dof", scene_with(R"("capacities": {"N": 1}, "dofs": {"Mq": "plastic"})"), "unknown dof \"Mq\""},
         BadScene{"unknown mode", scene_with(R"("capacities": {"N": 1}, "dofs": {"N": "elastic"})"), "unknown dof mode \"elastic\""},

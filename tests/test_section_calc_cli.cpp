@@ -1,6 +1,7 @@
 // section-calc end to end: the binary is run as a user would, its output parsed and checked.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -319,4 +320,94 @@ TEST(SectionCalc, BadInputFiles) {
         EXPECT_NE(run.err.find(c.message), std::string::npos) << c.file << ": " << run.err;
         EXPECT_EQ(run.err.find('\n'), run.err.size() - 1) << c.file << ": more than one line: " << run.err;
     }
+}
+
+namespace {
+
+// Exit 2, nothing on stdout, one line on stderr that contains `text`.
+void expect_refused(const std::string& arguments, const std::string& text) {
+    const CliRun run = section_calc(arguments);
+    EXPECT_EQ(run.exit_code, 2) << arguments;
+    EXPECT_EQ(run.out, "") << arguments;
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+    EXPECT_NE(run.err.find(text), std::string::npos) << run.err;
+}
+
+}  // namespace
+
+// --shape: an IPE 300 in S355 by name; Wpl,y = Mx/fy against the EN 10365 table's 628.4 cm³.
+TEST(SectionCalc, ShapeByName) {
+    const CliRun run = section_calc("--shape \"IPE300\" --material S355 --json");
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const nlohmann::json j = nlohmann::json::parse(run.out);
+    EXPECT_LT(relative_error(j["Mx"].get<double>() / 355e6, 628.4e-6), 5e-4);
+    EXPECT_LT(relative_error(j["Mz"].get<double>() / 355e6, 125.2e-6), 5e-4);
+    EXPECT_LT(relative_error(j["area"].get<double>(), 53.81e-4), 5e-4);
+    const CliRun same = section_calc("--shape \"I 300x150x7.1x10.7 r15\" --fy 355e6 --json");
+    ASSERT_EQ(same.exit_code, 0) << same.err;
+    EXPECT_DOUBLE_EQ(nlohmann::json::parse(same.out)["Mx"].get<double>(), j["Mx"].get<double>());
+    const CliRun table = section_calc("--shape \"HE 200 B\" --fy 235e6 --only N");
+    ASSERT_EQ(table.exit_code, 0) << table.err;
+    EXPECT_NE(table.out.find("--shape HE 200 B"), std::string::npos) << table.out;
+}
+
+TEST(SectionCalc, ShapeErrorsAreOneLine) {
+    expect_refused("--shape \"IPE 310\" --material S355", "did you mean IPE 300, IPE 330 or IPE 360?");
+    expect_refused("--shape \"IPE 300\"", "--shape needs --material NAME");
+    expect_refused("--shape \"I 300x150x7.1x160\" --fy 355e6", "tf = 160 mm must be less than h/2 = 150 mm");
+    expect_refused("--shape \"I 300x150x7.1x10.7 r80\" --fy 355e6", "root radius r 80 mm does not fit");
+    expect_refused("--shape \"TUBE 100x60\" --fy 355e6", "t = 60 mm must be less than D/2 = 50 mm");
+    expect_refused("--shape \"IPE 300\" --fy 355e6 --arc-tolerance 0.5", "between 1e-12 and 1e-2");
+    expect_refused("--shape \"IPE 300\" --fy 355e6 --rect 0.1 0.1", "not several");
+    expect_refused("--list-shapes XYZ", "unknown shape family \"XYZ\" (known: IPE, HEA");
+    expect_refused("--table IPE --shape \"IPE 300\"", "give no FILE, --rect or --shape");
+    expect_refused("--csv --shape \"IPE 300\" --fy 1e8", "--csv goes with --table");
+}
+
+TEST(SectionCalc, ListShapes) {
+    const CliRun text = section_calc("--list-shapes");
+    ASSERT_EQ(text.exit_code, 0) << text.err;
+    for (const char* name : {"IPE 300", "HEB 1000", "UPE 400", "CHS 168.3x8", "RHS 300x200x10", "L 60x40x5"})
+        EXPECT_NE(text.out.find(name), std::string::npos) << name;
+    const CliRun json = section_calc("--list-shapes HEB --json");
+    ASSERT_EQ(json.exit_code, 0) << json.err;
+    const nlohmann::json j = nlohmann::json::parse(json.out);
+    ASSERT_EQ(j["families"].size(), 1u);
+    EXPECT_EQ(j["families"][0]["shapes"].size(), 24u);
+    EXPECT_EQ(j["families"][0]["shapes"][5]["designation"], "HEB 200");
+    EXPECT_DOUBLE_EQ(j["families"][0]["shapes"][5]["geometry"]["r"].get<double>(), 0.018);
+    EXPECT_DOUBLE_EQ(j["families"][0]["shapes"][5]["published"]["Wpl_y"].get<double>(), 642.5e-6);
+}
+
+// --table: one row per shape, as CSV and as JSON; the angles' areas against EN 10056-1.
+TEST(SectionCalc, CatalogueTable) {
+    const CliRun csv = section_calc("--table L --skip-torsion --csv");
+    ASSERT_EQ(csv.exit_code, 0) << csv.err;
+    EXPECT_EQ(std::count(csv.out.begin(), csv.out.end(), '\n'), 11);
+    EXPECT_EQ(csv.out.rfind("designation,A,Ixx,Izz,Wel_x,Wel_z,Wpl_x,Wpl_z,N,Qx,Qz,Mx,Mz,My\n", 0), 0u) << csv.out;
+    const CliRun json = section_calc("--table L --json --fy 235e6");
+    ASSERT_EQ(json.exit_code, 0) << json.err;
+    const nlohmann::json j = nlohmann::json::parse(json.out);
+    ASSERT_EQ(j["rows"].size(), 10u);
+    EXPECT_EQ(j["rows"][0]["designation"], "L 30x20x3");
+    EXPECT_NEAR(j["rows"][0]["A"].get<double>(), 1.43e-4, 0.01e-4);  // EN 10056-1: 1.43 cm²
+    EXPECT_GT(j["rows"][0]["J"].get<double>(), 0.0);
+    EXPECT_GT(j["rows"][0]["T_p"].get<double>(), 0.0);
+    EXPECT_DOUBLE_EQ(j["rows"][0]["N"].get<double>(), 235e6 * j["rows"][0]["A"].get<double>());
+}
+
+// "shape" in a section file instead of parts.
+TEST(SectionCalc, ShapeInASectionFile) {
+    const std::string file = ::testing::TempDir() + "shape_section_" + std::to_string(getpid()) + ".json";
+    std::ofstream(file) << R"({"shape": "SHS 200x200x10", "material": "S355", "shear": "tresca"})";
+    const CliRun run = section_calc("--json \"" + file + "\"");
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const nlohmann::json j = nlohmann::json::parse(run.out);
+    EXPECT_LT(relative_error(j["Mx"].get<double>() / 355e6, 531e-6), 5e-3);  // EN 10210-2: Wpl 531 cm³
+    EXPECT_EQ(j["shear"], "tresca");
+    std::ofstream(file) << R"({"shape": "SHS 200x200x10", "material": "S355", "parts": []})";
+    expect_refused("\"" + file + "\"", "shape: give \"shape\" or \"parts\", not both");
+    std::ofstream(file) << R"({"shape": "SHS 210x200x10", "material": "S355"})";
+    expect_refused("\"" + file + "\"", "shape: shape \"SHS 210x200x10\": not a known designation");
+    std::remove(file.c_str());
 }

@@ -127,8 +127,8 @@ struct Strength {
 };
 
 Strength joint_strength(const Json& j, const std::string& where, const MaterialCatalogue& catalogue) {
-    if (j.contains("capacities") == j.contains("section")) {
-        throw InputError(where + ": give exactly one of \"capacities\" and \"section\"");
+    if (int(j.contains("capacities")) + int(j.contains("section")) + int(j.contains("shape")) != 1) {
+        throw InputError(where + ": give exactly one of \"capacities\", \"section\" and \"shape\"");
     }
     if (j.contains("stiffness") && j.contains("length")) {
         throw InputError(where + ": give at most one of \"stiffness\" and \"length\"");
@@ -137,12 +137,14 @@ Strength joint_strength(const Json& j, const std::string& where, const MaterialC
     if (j.contains("length")) s.length = positive_number(j["length"], where + ".length");
     if (j.contains("capacities")) {
         s.capacities = given_capacities(j["capacities"], where + ".capacities");
-        if (s.length) throw InputError(where + ".length: a stiffness from a length needs a \"section\"");
+        if (s.length) throw InputError(where + ".length: a stiffness from a length needs a \"section\" or \"shape\"");
     } else {
-        Json section = j["section"];
-        require_object(section, where + ".section");
+        // "shape": "HEB 200" is short for "section": {"shape": "HEB 200"} (docs/shapes.md).
+        const std::string key = j.contains("shape") ? "shape" : "section";
+        Json section = key == "shape" ? Json{{"shape", j["shape"]}} : j["section"];
+        require_object(section, where + "." + key);
         if (!section.contains("material") && j.contains("material")) section["material"] = j["material"];
-        const ValidSection valid = located(where + ".section", [&] {
+        const ValidSection valid = located(where + "." + key, [&] {
             return validate_section(parse_section_json(section.dump(), catalogue));
         });
         s.capacities = compute_capacities(valid);
@@ -188,7 +190,7 @@ void breaking_limits(const Json& j, const std::string& where, const std::optiona
 SceneJoint parse_joint(const Json& j, const std::string& where_in, const std::vector<SceneBody>& bodies,
                        const MaterialCatalogue& catalogue) {
     require_object(j, where_in);
-    reject_unknown_keys(j, where_in, {"name", "a", "b", "anchor", "axis", "x_axis", "capacities", "section", "material",
+    reject_unknown_keys(j, where_in, {"name", "a", "b", "anchor", "axis", "x_axis", "capacities", "section", "shape", "material",
                                       "stiffness", "length", "dofs", "max_plastic_displacement",
                                       "max_plastic_rotation", "engage_at"});
     SceneJoint joint;

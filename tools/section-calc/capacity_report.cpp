@@ -1,4 +1,5 @@
 #include "capacity_report.hpp"
+#include "text_columns.hpp"
 
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -43,13 +44,6 @@ std::string format(const char* pattern, double a, double b) {
     char buffer[96];
     std::snprintf(buffer, sizeof buffer, pattern, a, b);
     return buffer;
-}
-
-// Pads to `width` characters as a terminal shows them (UTF-8 continuation bytes take no column).
-std::string padded(const std::string& text, std::size_t width) {
-    std::size_t columns = 0;
-    for (unsigned char ch : text) columns += (ch & 0xC0) != 0x80;
-    return text + std::string(columns < width ? width - columns : 0, ' ');
 }
 
 std::string shear_rule(ShearCriterion shear) {

@@ -1,6 +1,7 @@
-// section-calc: the plastic capacities of a cross section (../shared/DESIGN.md, "Contracts").
+// section-calc: the plastic capacities of a cross section (docs/section-format.md, README).
 // Exit codes: 0 success, 2 bad input (one message on stderr), 1 internal failure.
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -12,6 +13,7 @@
 #include "capacity_report.hpp"
 #include "material_listing.hpp"
 #include "section_svg.hpp"
+#include "shape_listing.hpp"
 #include "plascap/input_error.hpp"
 #include "tool_main.hpp"
 #include "plascap/materials/catalogue.hpp"
@@ -22,13 +24,22 @@
 #include "plascap/sections/plastic_torsion.hpp"
 #include "plascap/sections/torsion_constant.hpp"
 #include "plascap/sections/section_json.hpp"
+#include "plascap/sections/shape_designation.hpp"
+#include "plascap/sections/shape_table.hpp"
 #include "plascap/sections/shapes.hpp"
+#include <unistd.h>
 
 namespace {
 
 struct Options {
     std::string file;
     std::vector<double> rect;
+    std::string shape;
+    std::optional<double> arc_tolerance;
+    std::optional<std::string> list_shapes;  // "" for every family
+    std::string table;
+    bool csv = false;
+    bool skip_torsion = false;
     std::optional<double> fy;
     std::optional<std::string> shear;
     std::vector<double> reference;
@@ -49,7 +60,23 @@ struct Options {
 void add_options(CLI::App& app, Options& o) {
     app.add_option("FILE", o.file, "Section file (JSON, format in docs/section-format.md); - reads standard input");
     app.add_option("--rect", o.rect, "Shortcut: a centred rectangle, B along x and H along z [m]")->expected(2);
-    app.add_option("--fy", o.fy, "Yield stress [Pa] of the --rect section");
+    app.add_option("--shape", o.shape, "Instead of FILE: a standard shape by name, e.g. \"IPE 300\", \"HE 200 B\", "
+                                       "\"CHS 168.3x8\", or parametric, e.g. \"I 300x150x7.1x10.7 r15\" (docs/shapes.md); "
+                                       "depth h along z, width b along x, so Mx is the strong-axis (EN y-y) moment");
+    app.add_option("--arc-tolerance", o.arc_tolerance, "With --shape or --table: largest area the chords of all arcs "
+                                                       "together may miss, relative to the section's area, 1e-12 to 1e-2 "
+                                                       "(default 1e-6)");
+    app.add_option("--list-shapes", o.list_shapes, "Print the shape catalogue, or one FAMILY of it (with --json: "
+                                                   "geometry, published values and sources)")
+        ->expected(0, 1)
+        ->default_str("");
+    app.add_option("--table", o.table, "One row per catalogue shape of FAMILY (or several, comma-separated, or all): "
+                                       "A, Ixx, Izz, Wel, Wpl, J, T_p "
+                                       "and every capacity, on all cores; material from --material or --fy "
+                                       "(default S355)");
+    app.add_flag("--csv", o.csv, "With --table: comma-separated values instead of the table");
+    app.add_flag("--skip-torsion", o.skip_torsion, "With --table: leave out J and T_p (the costly columns)");
+    app.add_option("--fy", o.fy, "Yield stress [Pa] of the --rect or --shape section (or of the --table shapes)");
     app.add_option("--material", o.material, "Catalogue material for every part (or the --rect section), e.g. S355; "
                                              "overrides the file");
     app.add_option("--materials", o.material_files, "Add a materials file (format: docs/materials.md) to the catalogue; "
@@ -96,9 +123,27 @@ plascap::MaterialCatalogue load_catalogue(const Options& o) {
     return catalogue;
 }
 
+plascap::ShapeOptions shape_options(const Options& o) {
+    plascap::ShapeOptions options;
+    if (o.arc_tolerance) options.area_tolerance = *o.arc_tolerance;
+    plascap::validate_shape_options(options);
+    return options;
+}
+
 plascap::Section load_section(const Options& o, const plascap::MaterialCatalogue& catalogue, std::string& source) {
-    if (!o.file.empty() && !o.rect.empty()) throw plascap::InputError("give either FILE or --rect B H, not both");
-    if (o.file.empty() && o.rect.empty()) throw plascap::InputError("no section: give FILE or --rect B H --fy FY (see --help)");
+    const int sources = !o.file.empty() + !o.rect.empty() + !o.shape.empty();
+    if (sources > 1) throw plascap::InputError("give one of FILE, --rect B H and --shape NAME, not several");
+    if (sources == 0)
+        throw plascap::InputError("no section: give FILE, --rect B H --fy FY or --shape NAME --material M (see --help)");
+    if (o.arc_tolerance && o.shape.empty()) throw plascap::InputError("--arc-tolerance goes with --shape or --table");
+    if (!o.shape.empty()) {
+        if (!o.fy && o.material.empty())
+            throw plascap::InputError("--shape needs --material NAME (e.g. S355) or --fy FY, the yield stress in Pa");
+        if (o.fy && !o.material.empty()) throw plascap::InputError("give --fy or --material, not both");
+        if (o.fy) require_positive(*o.fy, "--fy");
+        source = "--shape " + o.shape;
+        return plascap::shape_section(o.shape, plascap::Material{"", o.fy.value_or(1.0)}, shape_options(o));  // --material replaces it
+    }
     if (!o.rect.empty()) {
         if (!o.fy && o.material.empty())
             throw plascap::InputError("--rect needs --fy FY, the yield stress in Pa, or --material NAME");
@@ -108,7 +153,7 @@ plascap::Section load_section(const Options& o, const plascap::MaterialCatalogue
         source = "--rect " + number(o.rect[0]) + " x " + number(o.rect[1]) + " m";
         return plascap::rectangle_section(o.rect[0], o.rect[1], o.fy.value_or(1.0));  // --material replaces it
     }
-    if (o.fy) throw plascap::InputError("--fy goes with --rect; a section file gives its own materials (or use --material)");
+    if (o.fy) throw plascap::InputError("--fy goes with --rect or --shape; a section file gives its own materials (or use --material)");
     source = o.file == "-" ? "standard input" : o.file;
     if (o.file != "-") return plascap::read_section_file(o.file, catalogue);
     std::ostringstream text;
@@ -150,6 +195,50 @@ plascap::CubatureOptions cubature_options(const Options& o) {
     return options;
 }
 
+// The progress of a long table on standard error: a line rewritten in place on a terminal, else a
+// line every 2 s.
+class Progress {
+public:
+    void operator()(std::size_t done, std::size_t total) {
+        const auto now = std::chrono::steady_clock::now();
+        if (done < total && now - last_ < std::chrono::seconds(terminal_ ? 0 : 2)) return;
+        last_ = now;
+        std::fprintf(stderr, terminal_ ? "\rsection-calc: %zu of %zu shapes" : "section-calc: %zu of %zu shapes\n", done, total);
+        if (terminal_ && done == total) std::fputc('\n', stderr);
+        std::fflush(stderr);
+    }
+
+private:
+    bool terminal_ = isatty(2) != 0;
+    std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
+int run_table(const Options& o, const plascap::MaterialCatalogue& catalogue, const plascap::ShapeCatalogue& shapes) {
+    if (!o.file.empty() || !o.rect.empty() || !o.shape.empty())
+        throw plascap::InputError("--table computes catalogue shapes: give no FILE, --rect or --shape with it");
+    if (o.method != "exact" || !o.only.empty() || o.elastic || !o.svg.empty() || o.shear || !o.reference.empty())
+        throw plascap::InputError("--table goes with --material or --fy, --arc-tolerance, --csv or --json and --skip-torsion only");
+    if (o.csv && o.json) throw plascap::InputError("give --csv or --json, not both");
+    if (o.fy && !o.material.empty()) throw plascap::InputError("give --fy or --material, not both");
+    plascap::Material material = o.material.empty() ? catalogue.get("S355", "--table default material") : catalogue.get(o.material, "--material");
+    if (o.fy) {
+        require_positive(*o.fy, "--fy");
+        material = plascap::Material{"", *o.fy};
+    }
+    plascap::ShapeTableOptions options;
+    options.shape = shape_options(o);
+    options.torsion = !o.skip_torsion;
+    Progress progress;
+    options.progress = [&progress](std::size_t done, std::size_t total) { progress(done, total); };
+    const std::vector<const plascap::CatalogueShape*> rows = plascap::tools::shapes_of(shapes, o.table);
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<plascap::ShapeTableRow> table = plascap::shape_table(rows, material, options);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const auto format = o.csv ? plascap::tools::TableFormat::Csv : o.json ? plascap::tools::TableFormat::Json : plascap::tools::TableFormat::Text;
+    std::cout << plascap::tools::shape_table_text(table, material, format, seconds);
+    return 0;
+}
+
 int run(const Options& o) {
     if (o.method != "exact" && o.method != "cubature")
         throw plascap::InputError("--method " + o.method + ": unknown method (available: exact, cubature)");
@@ -161,6 +250,15 @@ int run(const Options& o) {
         std::cout << (o.json ? plascap::tools::material_json(catalogue) : plascap::tools::material_table(catalogue));
         return 0;
     }
+    if (o.csv && o.table.empty()) throw plascap::InputError("--csv goes with --table");
+    if (o.skip_torsion && o.table.empty()) throw plascap::InputError("--skip-torsion goes with --table");
+    const plascap::ShapeCatalogue& shapes = plascap::ShapeCatalogue::built_in();
+    if (o.list_shapes) {
+        std::cout << (o.json ? plascap::tools::shape_list_json(shapes, *o.list_shapes)
+                             : plascap::tools::shape_list(shapes, *o.list_shapes));
+        return 0;
+    }
+    if (!o.table.empty()) return run_table(o, catalogue, shapes);
     std::string source;
     plascap::Section section = load_section(o, catalogue, source);
     if (!o.material.empty()) {
@@ -170,7 +268,7 @@ int run(const Options& o) {
     if (o.shear) section.shear = plascap::parse_shear_criterion(*o.shear);
     if (!o.reference.empty()) section.reference = plascap::Point{o.reference[0], o.reference[1]};
 
-    const plascap::ValidSection valid = validated(section, o.file.empty() ? "" : source);
+    const plascap::ValidSection valid = validated(section, o.file.empty() ? (o.shape.empty() ? "" : source) : source);
     plascap::tools::ReportContext context{source, o.method, &valid};
     std::optional<plascap::CubatureResult> cubature_result;
     if (o.method == "cubature") {
@@ -208,7 +306,9 @@ int run(const Options& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"section-calc: plastic capacities N, Qx, Qz, Mx, Mz, My of a polygon cross section"};
+    CLI::App app{"section-calc: plastic capacities N, Qx, Qz, Mx, Mz, My of a polygon cross section or a standard "
+                 "shape. The section lies in the x-z plane, the beam axis is y; shapes have their depth h along z and "
+                 "their width b along x, so Mx is the strong-axis (EN y-y) and Mz the weak-axis (EN z-z) moment."};
     Options options;
     add_options(app, options);
     return plascap::tool_main("section-calc", app, argc, argv, [&] { return run(options); });

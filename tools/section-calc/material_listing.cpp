@@ -4,6 +4,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "text_columns.hpp"
+
 namespace plascap::tools {
 namespace {
 
@@ -13,13 +15,6 @@ std::string cell(const std::optional<double>& value, double unit, const char* pa
     char text[32];
     std::snprintf(text, sizeof text, pattern, *value / unit);
     return text;
-}
-
-// Pads to `width` columns as a terminal shows them (UTF-8 continuation bytes take none).
-std::string padded(const std::string& text, std::size_t width) {
-    std::size_t columns = 0;
-    for (unsigned char ch : text) columns += (ch & 0xC0) != 0x80;
-    return text + std::string(columns < width ? width - columns : 0, ' ');
 }
 
 }  // namespace
