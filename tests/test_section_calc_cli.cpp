@@ -240,7 +240,7 @@ TEST(SectionCalc, BadCommandLines) {
         std::string arguments;
         std::string message;
     } cases[] = {
-        {"", "section-calc: error: no section: give FILE or --rect B H --fy FY (see --help)\n"},
+        {"", "section-calc: error: no section: give FILE, --rect B H --fy FY or --shape NAME --material M (see --help)\n"},
         {"--rect 0.1 0.1", "section-calc: error: --rect needs --fy FY, the yield stress in Pa, or --material NAME\n"},
         {"--rect -0.1 0.1 --fy 1e8", "section-calc: error: --rect: width B [m] must be a positive finite number (got -0.1)\n"},
         {"--rect 0.1 0.1 --fy -1e8", "section-calc: error: part 0, material: yield stress fy must be a finite number >= 0 in Pa (got -100000000)\n"},

@@ -73,7 +73,7 @@ TEST(SectionJson, WrongTypesNameTheirLocation) {
 }
 
 TEST(SectionJson, MissingPiecesAreNamed) {
-    EXPECT_EQ(refusal(R"({})"), R"(section: has no "parts")");
+    EXPECT_EQ(refusal(R"({})"), R"(section: has no "parts" (or "shape"))");
     EXPECT_EQ(refusal(R"({"parts": [{"holes": []}]})"), R"(parts[0]: the part has no "outer" ring)");
     EXPECT_EQ(refusal(R"({"parts": [{"outer": [[0, 0], [1, 0], [1, 1]]}]})"),
               R"(parts[0]: no material: give the part a "material" or the section a default "material")");
@@ -84,7 +84,7 @@ TEST(SectionJson, UnknownKeysAreRefused) {
     EXPECT_EQ(refusal(R"({"material": {"fy": 1e8}, "parts": [{"outer": [[0, 0], [1, 0], [1, 1]], "hole": []}]})"),
               R"(parts[0]: unknown key "hole" (known keys: outer, holes, material, bars, reinforcement, name))");
     EXPECT_EQ(refusal(R"({"sheer": "tresca", "parts": []})"),
-              R"(section: unknown key "sheer" (known keys: shear, reference, material, parts, name, description))");
+              R"(section: unknown key "sheer" (known keys: shear, reference, material, parts, shape, name, description))");
 }
 
 TEST(SectionJson, UnknownShearCriterion) {
