@@ -1,5 +1,6 @@
 # Install rules and the exported CMake package: find_package(plascap) gives plascap::sections,
-# plascap::materials and plascap::common.
+# plascap::materials, plascap::common, plascap::adapters_common, and plascap::bullet and plascap::ode
+# when those adapters were built (test with if(TARGET plascap::bullet)).
 include(CMakePackageConfigHelpers)
 
 set(PLASCAP_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/plascap)

@@ -26,8 +26,6 @@ Vec3 rotate(const Mat& m, const Vec3& v) {
     return r;
 }
 
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
 Mat from_quaternion(const Quaternion& q) {
     const double w = q[0], x = q[1], y = q[2], z = q[3];
     return {{{1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)},

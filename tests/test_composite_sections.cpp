@@ -155,7 +155,7 @@ TEST(CompositeSections, ReinforcedConcreteBeamWithBars) {
     EXPECT_EQ(*c.z_pna_neg, -0.2);  // on the bars' level: the force steps there
 }
 
-// The paper's column (Section 3; ../shared/reference/values.md): 1 m² of concrete with 0.04 % steel
+// The paper's column (Section 3; docs/references.md): 1 m² of concrete with 0.04 % steel
 // of fy = 200 MPa carries 80 kN in tension; at dt = 1/60 s a joint row may pass 80 kN/60 = 1333 N·s
 // per step (the paper rounds to 1330).
 TEST(CompositeSections, PaperColumn) {

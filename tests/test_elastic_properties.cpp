@@ -1,5 +1,5 @@
 // Elastic section properties against textbook closed forms, the published I section of
-// ../shared/reference/values.md, hand calculations for an angle, and transformed-section stiffness.
+// docs/references.md, hand calculations for an angle, and transformed-section stiffness.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,6 +1,6 @@
 // Every engine adapter against the analytic references (issues 6 and 7, "Prove it" 1–8): the
 // single-degree-of-freedom elastic–perfectly-plastic oscillator and the rigid-plastic block of
-// ../shared/reference/values.md, the paper's tension block (§3, Tables 3.5 and 3.6). Each test runs
+// docs/references.md, the paper's tension block (§3, Tables 3.5 and 3.6). Each test runs
 // on Bullet (btGeneric6DofSpring2Constraint and btGeneric6DofSpringConstraint) and on ODE
 // (dWorldQuickStep and dWorldStep), through the same scenes.
 #include <gtest/gtest.h>

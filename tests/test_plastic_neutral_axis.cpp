@@ -101,7 +101,7 @@ TEST(PlasticNeutralAxis, TwoMaterialsShiftTheAxisIntoTheStrongerPart) {
     EXPECT_LT(relative_error(*c.N, 3.0 * f * 0.01), 1e-12);
 }
 
-// ../shared/reference/values.md: I section without root radius, d = 304, b = 165, tf = 10.2,
+// docs/references.md: I section without root radius, d = 304, b = 165, tf = 10.2,
 // tw = 6.1 mm: A = 5095.96 mm², Sxx = 617,119.6 mm³, Syy = 141,485.7 mm³ (published to 0.1 mm³).
 TEST(PublishedValues, ISection310UB) {
     const Section s = read_section_file(std::string(PLASCAP_SOURCE_DIR) + "/sections/examples/i-section.json");

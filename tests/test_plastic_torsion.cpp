@@ -1,5 +1,5 @@
 // The fully plastic torque T_p (Nadai's sand heap) against the closed forms of
-// ../shared/reference/values.md; the estimate must bound the error where the reference is exact.
+// docs/references.md; the estimate must bound the error where the reference is exact.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// Rectangles against the paper's closed forms (Fig. 2.5; ../shared/reference/values.md).
+// Rectangles against the paper's closed forms (Fig. 2.5; docs/references.md).
 #include <gtest/gtest.h>
 
 #include <cmath>

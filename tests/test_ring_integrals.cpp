@@ -69,7 +69,7 @@ TEST(ChordLengths, HoleSubtracts) {
     EXPECT_NEAR(outer.at_b + inner.at_b, 2.0, 1e-14);
 }
 
-// ../shared/reference/values.md: ∫∫ d dA over [−a, a] x [−c, c] about its centre, r = √(a²+c²):
+// docs/references.md: ∫∫ d dA over [−a, a] x [−c, c] about its centre, r = √(a²+c²):
 // (2/3)[2acr + a³ ln((c+r)/a) + c³ ln((a+r)/c)].
 double rectangle_distance_integral(double a, double c) {
     const double r = std::hypot(a, c);

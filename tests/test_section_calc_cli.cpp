@@ -411,3 +411,10 @@ TEST(SectionCalc, ShapeInASectionFile) {
     expect_refused("\"" + file + "\"", "shape: shape \"SHS 210x200x10\": not a known designation");
     std::remove(file.c_str());
 }
+
+// --version names the project's version (CMake's project(VERSION)), not a copy of it.
+TEST(SectionCalc, VersionIsTheProjects) {
+    const CliRun run = section_calc("--version");
+    EXPECT_EQ(run.exit_code, 0);
+    EXPECT_EQ(run.out, std::string("section-calc (plascap) ") + PLASCAP_VERSION + "\n");
+}

@@ -1,5 +1,5 @@
 // Saint-Venant torsion constant J by finite elements against the closed forms and the rectangle
-// series of ../shared/reference/values.md, and its O(h²) convergence.
+// series of docs/references.md, and its O(h²) convergence.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,5 +1,8 @@
 #include "boundary_distance.hpp"
 
+// Boost 1.74's R-tree includes one of Boost's own deprecated headers, which would print a note in
+// every build; the code here uses none of them.
+#define BOOST_ALLOW_DEPRECATED_HEADERS
 #include <boost/geometry.hpp>
 #include <boost/geometry/index/rtree.hpp>
 #include <limits>

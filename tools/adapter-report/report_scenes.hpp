@@ -1,7 +1,7 @@
 #pragma once
 // The scenes the adapter report runs, built in code: a load hanging on a plastic axial joint from an
 // anchor body that is itself held rigidly by the world (the suddenly loaded elastic–perfectly-
-// plastic oscillator of ../shared/reference/values.md when the anchor holds still).
+// plastic oscillator of docs/references.md when the anchor holds still).
 #include "scene.hpp"
 
 namespace plascap::report {

@@ -1,5 +1,5 @@
 #pragma once
-// The exit-code contract every plascap tool keeps (../shared/DESIGN.md): 0 on success, 2 on bad
+// The exit-code contract every plascap tool keeps (README, "section-calc"): 0 on success, 2 on bad
 // input or a bad command line with one message on stderr, 1 on an internal failure.
 #include <CLI/CLI.hpp>
 

@@ -38,10 +38,6 @@ std::optional<std::size_t> body_ref(const Json& j, const std::string& where, con
     throw InputError(where + ": no body named \"" + name + "\"");
 }
 
-Vec3 cross(const Vec3& a, const Vec3& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-
 // The joint frame: y along "axis"; x the part of "x_axis" across y (default: the world axis most
 // across y); z = x × y, so (x, y, z) is right-handed.
 std::array<Vec3, 3> joint_axes(const Json& j, const std::string& where) {
@@ -217,7 +213,7 @@ SceneJoint parse_joint(const Json& j, const std::string& where_in, const std::ve
     for (Dof dof : kAllDofs) {
         if (joint.settings.modes[index(dof)] != DofMode::Plastic) continue;
         DofLaw law = located(where + ", dof " + dof_name(dof),
-                             [&] { return dof_law_from_section(dof, strength.capacities, std::nullopt); });
+                             [&] { return dof_law_from_section(dof, strength.capacities); });
         law.stiffness = strength.stiffness[index(dof)];
         joint.settings.laws[index(dof)] = law;
     }

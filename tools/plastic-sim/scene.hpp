@@ -1,6 +1,6 @@
 #pragma once
 // A plastic-sim scene: rigid boxes joined to each other or to the world by plastic joints. The JSON
-// form is documented in docs/scenes.md; parse_scene_json() checks everything an engine would
+// form is documented in docs/plastic-sim.md; parse_scene_json() checks everything an engine would
 // otherwise crash on or silently mis-simulate.
 #include <array>
 #include <optional>

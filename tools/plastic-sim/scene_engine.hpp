@@ -1,6 +1,6 @@
 #pragma once
 // What plastic-sim needs from a physics engine running a Scene; one implementation per engine
-// (bullet_scene.cpp; ODE arrives with its issue). Everything engine-neutral (reading the scene,
+// (bullet_scene.cpp, ode_scene.cpp). Everything engine-neutral (reading the scene,
 // the run loop, reports) stays out of the implementations.
 #include <memory>
 #include <string>

@@ -102,7 +102,7 @@ void add_options(CLI::App& app, Options& o) {
     app.add_option("--length", o.length, "With --elastic: the joint stiffness of a segment of this length [m]: EA/L, EI/L, "
                                          "12EI/L³, GJ/L");
     app.add_flag("--json", o.json, "Print one JSON object instead of the table");
-    app.set_version_flag("--version", "section-calc (plascap) 0.1.0");
+    app.set_version_flag("--version", "section-calc (plascap) " PLASCAP_VERSION);
 }
 
 std::string number(double value) {

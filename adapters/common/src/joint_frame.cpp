@@ -7,14 +7,6 @@ namespace plascap {
 namespace {
 
 Vec3 column(const Mat3& m, std::size_t j) { return {m[0][j], m[1][j], m[2][j]}; }
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vec3 cross(const Vec3& a, const Vec3& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-Vec3 normalised(const Vec3& v) {
-    const double n = std::sqrt(dot(v, v));
-    return n > 0.0 ? Vec3{v[0] / n, v[1] / n, v[2] / n} : v;
-}
 Mat3 multiply(const Mat3& a, const Mat3& b) {
     Mat3 m{};
     for (std::size_t i = 0; i < 3; ++i)

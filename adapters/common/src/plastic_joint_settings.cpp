@@ -28,22 +28,9 @@ double required(const std::optional<double>& capacity, const char* name) {
     return *capacity;
 }
 
-std::optional<double> stiffness_of(Dof dof, const std::optional<JointStiffness>& s) {
-    if (!s) return std::nullopt;
-    switch (dof) {
-        case Dof::Qx: return s->shear_x;
-        case Dof::N: return s->axial;
-        case Dof::Qz: return s->shear_z;
-        case Dof::Mx: return s->bending_x;
-        case Dof::My: return s->torsion;
-        case Dof::Mz: return s->bending_z;
-    }
-    return std::nullopt;
-}
-
 }  // namespace
 
-DofLaw dof_law_from_section(Dof dof, const Capacities& c, const std::optional<JointStiffness>& stiffness) {
+DofLaw dof_law_from_section(Dof dof, const Capacities& c) {
     DofLaw law;
     switch (dof) {
         case Dof::Qx: law.capacity_positive = law.capacity_negative = required(c.Qx, "Qx"); break;
@@ -62,8 +49,7 @@ DofLaw dof_law_from_section(Dof dof, const Capacities& c, const std::optional<Jo
             law.capacity_negative = required(c.Mz_neg, "Mz_neg");
             break;
     }
-    law.stiffness = stiffness_of(dof, stiffness);
-    return law;
+    return law;  // rigid-plastic: a stiffness, where wanted, comes from the beam segment (joint_stiffness.hpp)
 }
 
 }  // namespace plascap

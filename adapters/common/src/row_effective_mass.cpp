@@ -5,10 +5,6 @@
 namespace plascap {
 namespace {
 
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vec3 cross(const Vec3& a, const Vec3& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
 double quadratic(const Mat3& m, const Vec3& v) {
     return dot(v, {dot(m[0], v), dot(m[1], v), dot(m[2], v)});
 }

@@ -1,5 +1,5 @@
 #pragma once
-// The plastic capacities of a section (paper eqs. 2.10-2.14; ../shared/DESIGN.md):
+// The plastic capacities of a section (paper eqs. 2.10-2.14; README, "What it computes"):
 //   N  = Σ fy·A                 axial force along y            [N]     eq. 2.10
 //   Qx = Qz = Σ τy·A            shear forces along x and z     [N]     eq. 2.11
 //   Mx = ∫ fy·|z − z_pna| dA    bending about x                [N·m]   eq. 2.12, about the plastic neutral axis

@@ -1,6 +1,6 @@
 #pragma once
 // Cross-section geometry as users give it. Coordinates are [x, z] in metres; the section lies
-// in the x-z plane and the joint (beam) axis is y (../shared/DESIGN.md, paper Fig. 2.2).
+// in the x-z plane and the joint (beam) axis is y (paper Fig. 2.2; docs/section-format.md).
 #include <optional>
 #include <vector>
 

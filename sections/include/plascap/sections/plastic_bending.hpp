@@ -1,7 +1,7 @@
 #pragma once
 // Fully plastic bending: the plastic neutral axis — the line of constant level (z for Mx, x for Mz)
 // with equal yield force on both sides, Σ fy·A_below(t) = N/2 — and the plastic moment about it,
-// ∫ fy·|level − t| dA (paper eqs. 2.12, 2.13; ../shared/DESIGN.md, "Capacity definitions").
+// ∫ fy·|level − t| dA (paper eqs. 2.12, 2.13; README, "What it computes").
 #include "plascap/sections/ring_integrals.hpp"
 #include "plascap/sections/valid_section.hpp"
 

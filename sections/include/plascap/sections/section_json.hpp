@@ -1,5 +1,5 @@
 #pragma once
-// Reads the section file format of ../shared/DESIGN.md ("Contracts"):
+// Reads the section file format of docs/section-format.md:
 //   {"shear": "tresca" | "von-mises", "reference": [x, z], "material": "S355" | {"fy": Pa, ...},
 //    "parts": [{"outer": [[x, z], ...], "holes": [[[x, z], ...], ...], "material": ...}],
 //    "name": "...", "description": "..."}

@@ -1,6 +1,6 @@
 #pragma once
-// The six degrees of freedom of a joint, in the joint frame of ../shared/DESIGN.md: y is the beam
-// (joint) axis, the section lies in x–z. A dof's position is the motion of body b relative to body a:
+// The six degrees of freedom of a joint, in plascap's joint frame (README, "What it computes";
+// paper Fig. 2.2): y is the beam (joint) axis, the section lies in x–z. A dof's position is the motion of body b relative to body a:
 // translation of b's anchor along the axis [m], or rotation of b about it (right-hand rule) [rad].
 #include <array>
 #include <cstddef>

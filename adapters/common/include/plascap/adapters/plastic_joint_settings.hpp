@@ -8,7 +8,6 @@
 #include "plascap/adapters/dof.hpp"
 #include "plascap/adapters/elastic_plastic_law.hpp"
 #include "plascap/sections/capacities.hpp"
-#include "plascap/sections/joint_stiffness.hpp"
 
 namespace plascap {
 
@@ -27,8 +26,8 @@ void validate_joint_settings(const PlasticJointSettings& settings, const std::st
 // The capacity of each dof from a section's capacities (both signs; see capacities.hpp for which
 // rotation puts which side in tension): Qx, Qz, My act alike both ways; N resists positive motion
 // (elongation when the joint's y axis points from a to b) with N and negative with N_neg; Mx and Mz
-// with Mx, Mz one way and Mx_neg, Mz_neg the other. Stiffness from the beam segment, if given.
-// Throws InputError if a capacity the dof needs is missing or zero.
-DofLaw dof_law_from_section(Dof dof, const Capacities& capacities, const std::optional<JointStiffness>& stiffness);
+// with Mx, Mz one way and Mx_neg, Mz_neg the other. No stiffness: the law is rigid-plastic until one
+// is set. Throws InputError if a capacity the dof needs is missing or zero.
+DofLaw dof_law_from_section(Dof dof, const Capacities& capacities);
 
 }  // namespace plascap

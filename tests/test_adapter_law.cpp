@@ -1,0 +1,233 @@
+// The engine-neutral runtime law (adapters/common) against hand calculations, with no engine:
+// one dof's force, return mapping, dissipation and regimes; a load reversal with F⁺ ≠ F⁻; the
+// joint's breaking rule; the world-to-joint load decomposition for a turned joint and for
+// non-orthogonal Euler axes; the frame measurement near its singular angle; the row effective
+// masses of two moving bodies.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "plascap/adapters/joint_frame.hpp"
+#include "plascap/adapters/joint_loads.hpp"
+#include "plascap/adapters/plastic_joint_law.hpp"
+#include "plascap/adapters/row_effective_mass.hpp"
+
+namespace {
+
+using namespace plascap;
+
+const double kPi = std::acos(-1.0);
+
+// Elastic–perfectly-plastic spring k = 100 N/m, F⁺ = 10 N, F⁻ = 20 N, on a mass whose ω·dt is
+// small (m = 100 kg, dt = 0.01 s: ω·dt = 0.01). Hand calculation, step by step (Simo & Hughes §1.2):
+TEST(ElasticPlasticLaw, ForceReturnMappingDissipationAndReversal) {
+    ElasticPlasticLaw law(DofLaw{10.0, 20.0, 100.0});
+    law.start(0.0);
+    // x = 0.05: f = −k·x = −5 N, elastic; ½·k·x² = 0.125 J stored.
+    RowCommand c = law.plan(0.05, 0.01, 100.0);
+    EXPECT_EQ(c.kind, RowCommand::Kind::Push);
+    EXPECT_DOUBLE_EQ(c.force, -5.0);
+    EXPECT_EQ(law.regime(), Regime::ElasticPlastic);
+    EXPECT_NEAR(law.omega_dt(), 0.01, 1e-15);
+    law.settle(0.05, c.force);
+    EXPECT_DOUBLE_EQ(law.accumulated_plastic(), 0.0);
+    EXPECT_DOUBLE_EQ(law.elastic_energy(0.05), 0.125);
+    // x = 0.15: trial −15 N passes F⁺ = 10: the force is capped at −10 and x_p returns to
+    // x − F⁺/k = 0.05; dissipated F⁺·Δx_p = 10 · 0.05 = 0.5 J.
+    c = law.plan(0.15, 0.01, 100.0);
+    EXPECT_DOUBLE_EQ(c.force, -10.0);
+    law.settle(0.15, c.force);
+    EXPECT_NEAR(law.plastic_offset(), 0.05, 1e-15);
+    EXPECT_NEAR(law.accumulated_plastic(), 0.05, 1e-15);
+    EXPECT_NEAR(law.dissipated(), 0.5, 1e-14);
+    EXPECT_NEAR(law.elastic_energy(0.15), 0.5 * 100 * 0.1 * 0.1, 1e-14);  // on the capacity: F²/(2k)
+    // Reversal to x = −0.2: trial −k·(x − x_p) = 25 N passes F⁻ = 20: capped at +20, x_p returns to
+    // x + F⁻/k = 0; Δx_p = 0.05, dissipated += 20 · 0.05 = 1 J.
+    c = law.plan(-0.2, 0.01, 100.0);
+    EXPECT_DOUBLE_EQ(c.force, 20.0);
+    law.settle(-0.2, c.force);
+    EXPECT_NEAR(law.plastic_offset(), 0.0, 1e-15);
+    EXPECT_NEAR(law.accumulated_plastic(), 0.1, 1e-15);
+    EXPECT_NEAR(law.dissipated(), 1.5, 1e-14);
+    // Unloading back inside the elastic range moves nothing.
+    c = law.plan(-0.1, 0.01, 100.0);
+    EXPECT_DOUBLE_EQ(c.force, 10.0);
+    law.settle(-0.1, c.force);
+    EXPECT_NEAR(law.accumulated_plastic(), 0.1, 1e-15);
+}
+
+// Rigid-plastic (no stiffness): a Hold row bounded by the capacity of the side being loaded; it
+// flows only in steps where the row reached its bound, and the row's work −f·Δx is dissipated.
+TEST(ElasticPlasticLaw, RigidPlasticHoldsBelowAndFlowsAtEachSidesCapacity) {
+    ElasticPlasticLaw law(DofLaw{10.0, 20.0, std::nullopt});
+    law.start(0.0);
+    RowCommand c = law.plan(0.0, 0.01, 1.0);
+    EXPECT_EQ(c.kind, RowCommand::Kind::Hold);
+    EXPECT_EQ(law.regime(), Regime::RigidPlastic);
+    EXPECT_DOUBLE_EQ(c.bound, 10.0);  // before any load: the smaller capacity
+    EXPECT_DOUBLE_EQ(c.velocity, 0.0);
+    // Pulled the negative way, at the bound: b moved −1 mm, the row pushed +10 N.
+    law.settle(-0.001, 10.0);
+    EXPECT_NEAR(law.plastic_offset(), -0.001, 1e-15);
+    EXPECT_NEAR(law.dissipated(), 0.01, 1e-15);  // −f·Δx = −10 · (−0.001)
+    // Loaded on the negative side, the bound is F⁻ = 20 N from now on.
+    c = law.plan(-0.001, 0.01, 1.0);
+    EXPECT_DOUBLE_EQ(c.bound, 20.0);
+    // Below the bound (15 N of 20), a drift of 0.5 mm the solver let through is no flow; the next
+    // step drives it back at kHoldCorrection · 0.5 mm / dt = 0.01 m/s.
+    law.settle(-0.0015, 15.0);
+    EXPECT_NEAR(law.plastic_offset(), -0.001, 1e-15);
+    c = law.plan(-0.0015, 0.01, 1.0);
+    EXPECT_NEAR(c.velocity, kHoldCorrection * 0.0005 / 0.01, 1e-15);
+    // The load reverses: once the row pushed the other way, the bound is F⁺ = 10 N. (A symmetric
+    // row bound takes the side last loaded, so the first reversed step is bounded by F⁻; issue 16's
+    // own constraint gives each side its bound.)
+    law.settle(-0.001, -8.0);
+    c = law.plan(-0.001, 0.01, 1.0);
+    EXPECT_DOUBLE_EQ(c.bound, 10.0);
+    law.settle(0.001, -10.0);  // at F⁺: flows +2 mm, absorbs 10 · 0.002
+    EXPECT_NEAR(law.plastic_offset(), 0.001, 1e-15);
+    EXPECT_NEAR(law.dissipated(), 0.01 + 0.02, 1e-15);
+    EXPECT_NEAR(law.accumulated_plastic(), 0.003, 1e-15);
+}
+
+// Paper eq. 3.2: a spring with √(k/m)·dt > 0.25 is too stiff to sample and holds rigid-plastic.
+TEST(ElasticPlasticLaw, StiffSpringsFallBackToRigidPlastic) {
+    ElasticPlasticLaw law(DofLaw{10.0, 10.0, 1e6});
+    law.start(0.0);
+    RowCommand c = law.plan(0.0, 0.01, 1.0);  // ω·dt = 1000 · 0.01 = 10
+    EXPECT_EQ(law.regime(), Regime::StiffRigidPlastic);
+    EXPECT_EQ(c.kind, RowCommand::Kind::Hold);
+    EXPECT_NEAR(law.omega_dt(), 10.0, 1e-12);
+    c = law.plan(0.0, 0.0025, 1.0);  // ω·dt = 2.5 still
+    EXPECT_EQ(law.regime(), Regime::StiffRigidPlastic);
+    c = law.plan(0.0, 0.0002, 1.0);  // ω·dt = 0.2 ≤ 0.25: elastic-plastic
+    EXPECT_EQ(law.regime(), Regime::ElasticPlastic);
+    EXPECT_EQ(c.kind, RowCommand::Kind::Push);
+}
+
+// The joint breaks when Σ|Δx_p| over the translations passes its limit, and stays broken.
+TEST(PlasticJointLaw, BreaksAtTheSummedPlasticDisplacementAndStaysBroken) {
+    PlasticJointSettings s;
+    s.modes.fill(DofMode::Rigid);
+    s.modes[index(Dof::N)] = DofMode::Plastic;
+    s.modes[index(Dof::Qx)] = DofMode::Plastic;
+    s.modes[index(Dof::Mz)] = DofMode::Plastic;
+    s.laws[index(Dof::N)] = DofLaw{10.0, 10.0, std::nullopt};
+    s.laws[index(Dof::Qx)] = DofLaw{5.0, 5.0, std::nullopt};
+    s.laws[index(Dof::Mz)] = DofLaw{1.0, 1.0, std::nullopt};
+    s.max_plastic_displacement = 0.01;
+    s.max_plastic_rotation = 0.1;
+    PlasticJointLaw joint(s);
+    PerDof<double> x{};
+    joint.start(x);
+    const PerDof<double> masses{1, 1, 1, 1, 1, 1};
+    for (int step = 1; step <= 3; ++step) {
+        joint.plan(x, 0.01, masses);
+        x[index(Dof::N)] -= 0.003;   // flows 3 mm per step at +10 N
+        x[index(Dof::Qx)] -= 0.001;  // and 1 mm at +5 N
+        x[index(Dof::Mz)] -= 0.01;   // and 0.01 rad at +1 N·m (its own limit is far)
+        const PerDof<double> f{5.0, 10.0, 0.0, 0.0, 0.0, 1.0};
+        const bool broke = joint.settle(x, f, 0.01 * step);
+        EXPECT_EQ(broke, step == 3) << step;  // 4, 8, then 12 mm > 10 mm
+    }
+    ASSERT_TRUE(joint.broken());
+    EXPECT_NEAR(*joint.broken_at(), 0.03, 1e-15);
+    EXPECT_NEAR(joint.plastic_displacement(), 0.012, 1e-15);
+    EXPECT_NEAR(joint.plastic_rotation(), 0.03, 1e-15);
+    EXPECT_NEAR(joint.dissipated(), 3 * (10 * 0.003 + 5 * 0.001 + 1 * 0.01), 1e-14);
+    x[index(Dof::N)] -= 1.0;
+    EXPECT_FALSE(joint.settle(x, PerDof<double>{5.0, 10.0, 0, 0, 0, 1.0}, 0.04));  // ignored
+    EXPECT_NEAR(joint.plastic_displacement(), 0.012, 1e-15);
+    EXPECT_EQ(joint.law(Dof::Qz), nullptr);  // rigid dofs have no law
+}
+
+// A joint turned 90° about the world z: x_j = (0, 1, 0), y_j = (−1, 0, 0), z_j = (0, 0, 1); the
+// anchor at the origin, b's centre at (1, 0, 0). F = (3, 4, 5) N on b, no torque about the centre:
+// moment about the anchor = (c − anchor) × F = (1, 0, 0) × (3, 4, 5) = (0, −5, 4).
+TEST(JointLoads, TurnedJointTakesComponentsAndTransfersTheMoment) {
+    JointAxesInWorld axes;
+    axes.anchor = {0, 0, 0};
+    axes.translation = {Vec3{0, 1, 0}, Vec3{-1, 0, 0}, Vec3{0, 0, 1}};
+    axes.rotation = axes.translation;
+    const PerDof<double> q = joint_frame_loads(WorldLoad{{3, 4, 5}, {0, 0, 0}}, {1, 0, 0}, axes);
+    EXPECT_DOUBLE_EQ(q[index(Dof::Qx)], 4.0);
+    EXPECT_DOUBLE_EQ(q[index(Dof::N)], -3.0);
+    EXPECT_DOUBLE_EQ(q[index(Dof::Qz)], 5.0);
+    EXPECT_DOUBLE_EQ(q[index(Dof::Mx)], -5.0);
+    EXPECT_DOUBLE_EQ(q[index(Dof::My)], 0.0);
+    EXPECT_DOUBLE_EQ(q[index(Dof::Mz)], 4.0);
+    // A torque about the centre adds as it is.
+    const PerDof<double> t = joint_frame_loads(WorldLoad{{0, 0, 0}, {0, 0, 2}}, {1, 0, 0}, axes);
+    EXPECT_DOUBLE_EQ(t[index(Dof::Mz)], 2.0);
+}
+
+// Euler rows are not orthogonal: the moment is split in their basis. M = (1, 1, 0) on
+// e0 = (1, 0, 0), e1 = (1, 1, 0)/√2, e2 = (0, 0, 1) is 0·e0 + √2·e1 + 0·e2 (projections would
+// give 1, √2, 0).
+TEST(JointLoads, NonOrthogonalRotationAxesSplitTheMomentExactly) {
+    JointAxesInWorld axes;
+    axes.translation = {Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1}};
+    axes.rotation = {Vec3{1, 0, 0}, Vec3{1 / std::sqrt(2.0), 1 / std::sqrt(2.0), 0}, Vec3{0, 0, 1}};
+    const PerDof<double> q = joint_frame_loads(WorldLoad{{0, 0, 0}, {1, 1, 0}}, {0, 0, 0}, axes);
+    EXPECT_NEAR(q[index(Dof::Mx)], 0.0, 1e-15);
+    EXPECT_NEAR(q[index(Dof::My)], std::sqrt(2.0), 1e-15);
+    EXPECT_NEAR(q[index(Dof::Mz)], 0.0, 1e-15);
+}
+
+Mat3 rotation_x(double a) { return {{{1, 0, 0}, {0, std::cos(a), -std::sin(a)}, {0, std::sin(a), std::cos(a)}}}; }
+Mat3 rotation_y(double a) { return {{{std::cos(a), 0, std::sin(a)}, {0, 1, 0}, {-std::sin(a), 0, std::cos(a)}}}; }
+Mat3 rotation_z(double a) { return {{{std::cos(a), -std::sin(a), 0}, {std::sin(a), std::cos(a), 0}, {0, 0, 1}}}; }
+Mat3 product(const Mat3& a, const Mat3& b) {
+    Mat3 m{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            for (int k = 0; k < 3; ++k) m[i][j] += a[i][k] * b[k][j];
+    return m;
+}
+
+// R = Aᵀ·B = Rz(θz)·Ry(θy)·Rx(θx): the measured angles are the ones put in, also within a degree of
+// the singular θy = 90°, and the translation is b's anchor minus a's along a's axes.
+TEST(JointFrame, MeasuresEulerAnglesUpToADegreeFromTheSingularTwist) {
+    for (double theta_y_degrees : {0.0, 30.0, -60.0, 89.0, -89.0}) {
+        const double ty = theta_y_degrees * kPi / 180.0, tx = 0.3, tz = -0.4;
+        Pose a;
+        a.rotation = rotation_z(0.7);  // a itself turned
+        a.origin = {1, 2, 3};
+        Pose b;
+        b.rotation = product(a.rotation, product(rotation_z(tz), product(rotation_y(ty), rotation_x(tx))));
+        const Vec3 offset_in_a = {0.01, -0.02, 0.03};
+        b.origin = {a.origin[0], a.origin[1], a.origin[2]};
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) b.origin[i] += a.rotation[i][j] * offset_in_a[j];
+        const JointFrameState s = measure_joint(a, b);
+        EXPECT_NEAR(s.positions[index(Dof::Mx)], tx, 1e-9) << theta_y_degrees;
+        EXPECT_NEAR(s.positions[index(Dof::My)], ty, 1e-9) << theta_y_degrees;
+        EXPECT_NEAR(s.positions[index(Dof::Mz)], tz, 1e-9) << theta_y_degrees;
+        EXPECT_NEAR(s.positions[index(Dof::Qx)], 0.01, 1e-12);
+        EXPECT_NEAR(s.positions[index(Dof::N)], -0.02, 1e-12);
+        EXPECT_NEAR(s.positions[index(Dof::Qz)], 0.03, 1e-12);
+    }
+}
+
+// Two moving bodies on one row, 1/(J·M⁻¹·Jᵀ) by hand: b (2 kg, I⁻¹ = diag(1, 1/2, 1/3), centre
+// (0, 1, 0)) and a (4 kg, I⁻¹ = diag(1/4), centre (0, −1, 0)), anchor at the origin. The x row:
+// b's lever (0, −1, 0) × x = (0, 0, 1) → 1/2 + 1/3; a's (0, 1, 0) × x = (0, 0, −1) → 1/4 + 1/4;
+// m = 1/(4/3) = 0.75 kg. The rotation row about z: 1/(1/3 + 1/4) = 12/7 kg·m².
+TEST(RowEffectiveMass, TwoMovingBodiesMatchTheClosedForm) {
+    JointAxesInWorld axes;
+    axes.anchor = {0, 0, 0};
+    axes.translation = {Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1}};
+    axes.rotation = axes.translation;
+    const BodyInertia b{0.5, {{{1, 0, 0}, {0, 0.5, 0}, {0, 0, 1.0 / 3}}}, {0, 1, 0}};
+    const BodyInertia a{0.25, {{{0.25, 0, 0}, {0, 0.25, 0}, {0, 0, 0.25}}}, {0, -1, 0}};
+    const PerDof<double> m = row_effective_masses(axes, b, a);
+    EXPECT_NEAR(m[index(Dof::Qx)], 0.75, 1e-15);
+    EXPECT_NEAR(m[index(Dof::N)], 1.0 / (0.5 + 0.25), 1e-15);  // along the levers: no rotation
+    EXPECT_NEAR(m[index(Dof::Mz)], 12.0 / 7.0, 1e-14);
+    EXPECT_NEAR(m[index(Dof::Mx)], 1.0 / (1.0 + 0.25), 1e-15);
+    // Against the world (a absent) only b counts.
+    EXPECT_NEAR(row_effective_masses(axes, b, std::nullopt)[index(Dof::Qx)], 1.0 / (0.5 + 1.0 / 3), 1e-15);
+}
+
+}  // namespace
