@@ -98,6 +98,51 @@ Trace record(const std::string& engine_name, const Scene& scene, Dof dof, const 
 
 }  // namespace
 
+Trace run(const std::string& engine_name, const TwoBodies& t) {
+    Scene s;
+    s.dt = t.dt;
+    s.duration = t.steps * t.dt;
+    s.iterations = t.iterations;
+    s.gravity = {0, 0, 0};
+    SceneBody a, b;
+    a.name = "a", b.name = "b";
+    a.size = b.size = {0.2, 0.2, 0.2};
+    a.mass = t.mass_a, b.mass = t.mass_b;
+    a.position = {0, -0.5, 0}, b.position = {0, 0.5, 0};
+    // Centre of mass at rest: a moves −m_b/(m_a + m_b)·u0, b +m_a/(m_a + m_b)·u0.
+    a.velocity = {0, -t.u0 * t.mass_b / (t.mass_a + t.mass_b), 0};
+    b.velocity = {0, t.u0 * t.mass_a / (t.mass_a + t.mass_b), 0};
+    s.bodies = {a, b};
+    SceneJoint j;
+    j.name = "joint";
+    j.a = 0;
+    j.b = 1;
+    j.anchor = {0, 0, 0};
+    j.axes = {Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1}};
+    j.settings.modes.fill(DofMode::Rigid);
+    j.settings.modes[index(Dof::N)] = DofMode::Plastic;
+    j.settings.laws[index(Dof::N)] = DofLaw{t.capacity_tension, t.capacity_compression, t.stiffness};
+    s.joints = {j};
+    const std::unique_ptr<SceneEngine> engine = make_engine(engine_name, s);
+    Trace trace;
+    for (std::size_t i = 0; i < s.steps(); ++i) {
+        engine->step();
+        const PlasticJointLaw* joint = engine->joint_law(0);
+        const PerDof<double> x = engine->joint_positions(0);
+        const ElasticPlasticLaw* law = joint->law(Dof::N);
+        trace.time.push_back(engine->time());
+        trace.position.push_back(x[index(Dof::N)]);
+        trace.force.push_back(engine->joint_forces(0)[index(Dof::N)]);
+        trace.plastic.push_back(law->accumulated_plastic());
+        trace.dissipated.push_back(law->dissipated());
+        trace.elastic.push_back(joint->elastic_energy(x));
+        trace.energy.push_back(kinetic_energy(s.bodies[0], engine->body(0)) + kinetic_energy(s.bodies[1], engine->body(1)) +
+                               trace.elastic.back() + trace.dissipated.back());
+        trace.body_y.push_back(engine->body(1).position[1]);
+    }
+    return trace;
+}
+
 Trace run(const std::string& engine, const HangingBlock& h) {
     SceneBody block;
     block.name = "block";

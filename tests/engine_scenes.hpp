@@ -42,7 +42,20 @@ struct Cantilever {
     }
 };
 
+// Two free bodies (no gravity, no world) joined along y by a joint whose N dof is plastic with
+// capacities F⁺ (tension) and F⁻ (compression), the others rigid, flying apart (u0 > 0) or together
+// (u0 < 0) at relative speed |u0|: the relative coordinate is an oscillator of the reduced mass
+// μ = m_a·m_b/(m_a + m_b). `position` in the trace is the N dof (b's elongation from a).
+struct TwoBodies {
+    double mass_a = 2.0, mass_b = 2.0, u0 = 4.0, capacity_tension = 20.0, capacity_compression = 10.0;
+    std::optional<double> stiffness;
+    double dt = 1e-3;
+    int iterations = 20, steps = 2000;
+    double reduced_mass() const { return mass_a * mass_b / (mass_a + mass_b); }
+};
+
 Trace run(const std::string& engine, const HangingBlock& scene);
+Trace run(const std::string& engine, const TwoBodies& scene);
 Trace run(const std::string& engine, const Cantilever& scene);
 
 }  // namespace plascap::test

@@ -1,7 +1,9 @@
 #pragma once
 // A Bullet dynamics world with everything it owns (collision configuration, dispatcher, broadphase,
-// sequential-impulse solver), for tools, tests and benchmarks. Bodies and constraints added to it
-// stay owned by the caller.
+// sequential-impulse solver), and a box body. Installed on purpose: a program that only wants plastic
+// joints in a plain world needs nothing more (examples/consumer/bullet_main.cpp), and plascap's
+// tools, tests and benchmarks use the same. Bodies and constraints stay owned by the caller, and a
+// body joins the world only through world().addRigidBody().
 #include <btBulletDynamicsCommon.h>
 
 #include <memory>
