@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   g++ cmake make pkg-config
-  libcgal-dev libgmp-dev libmpfr-dev   # exact geometry (validation; meshing later)
+  libcgal-dev libgmp-dev libmpfr-dev   # exact geometry (validation, meshing)
   libgsl-dev                           # cubature
   libeigen3-dev                        # linear algebra
   libboost-dev                         # Boost.Geometry R-tree (sand-heap distances)
