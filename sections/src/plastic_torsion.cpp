@@ -1,6 +1,8 @@
 #include "plascap/sections/plastic_torsion.hpp"
 
 #include <algorithm>
+#include <array>
+#include <queue>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -16,6 +18,9 @@ namespace plascap {
 namespace {
 
 using detail::distance_to_ring;
+
+constexpr int kHeapRuleOrder = 4;               // points per direction of the fixed rule on each piece
+constexpr std::size_t kMaxPieces = 2000000;      // triangles at most: past it, not converged
 using detail::distance_to_segment;
 
 // The gap between two rings that do not cross: the nearest pair of points lies at a vertex of one.
@@ -56,28 +61,66 @@ private:
     detail::BoundaryDistance height_;
 };
 
-// ∫φ over the part's triangles by the given rule, plus the hole plateaus: the heap's volume.
-detail::Estimate heap_volume(const SectionMesh& mesh, const Part& part, std::size_t p, const detail::TriangleRule& rule) {
+std::array<detail::Triangle, 4> quadrisected(const detail::Triangle& t) {
+    const Point ab{(t.a.x + t.b.x) / 2, (t.a.z + t.b.z) / 2}, bc{(t.b.x + t.c.x) / 2, (t.b.z + t.c.z) / 2},
+        ca{(t.c.x + t.a.x) / 2, (t.c.z + t.a.z) / 2};
+    return {detail::Triangle{t.a, ab, ca}, detail::Triangle{ab, t.b, bc}, detail::Triangle{ca, bc, t.c},
+            detail::Triangle{bc, ca, ab}};
+}
+
+// ∫φ over the part's triangles, plus the hole plateaus: the heap's volume, to `tolerance` relative.
+// Globally adaptive (as QUADPACK's qag is in one dimension): every triangle gets the fixed Gauss
+// rule and its own estimate |Q(P) − Q(⌈P/2⌉)|; while the estimates add up to more than the
+// tolerance, the triangle with the largest is cut into its four midpoint children. The kinks of φ
+// along the medial axis so get small triangles around them only.
+detail::Estimate heap_volume(const SectionMesh& mesh, const Part& part, std::size_t p, double tolerance) {
     const std::vector<double> plateau = plateaus(part);
     const SandHeap heap(part, plateau);
+    const detail::TriangleRule rule = detail::TriangleRule::fixed(kHeapRuleOrder);
+    struct Piece {
+        detail::Triangle triangle;
+        detail::Estimate estimate;
+        bool operator<(const Piece& other) const { return estimate.error < other.estimate.error; }
+    };
+    std::priority_queue<Piece> pieces;
     detail::Estimate volume;
     for (std::size_t k = 0; k < part.holes.size(); ++k) volume.value += plateau[k] * std::abs(ring_moments(part.holes[k]).area);
+    double plateaus_volume = volume.value, value = 0.0, error = 0.0;
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
         if (mesh.part_of[t] != p) continue;
         const auto& v = mesh.triangles[t];
-        const detail::Estimate e = rule.integrate({mesh.vertices[v[0]], mesh.vertices[v[1]], mesh.vertices[v[2]]}, heap);
-        volume.value += e.value;
-        volume.error += e.error;
+        const detail::Triangle triangle{mesh.vertices[v[0]], mesh.vertices[v[1]], mesh.vertices[v[2]]};
+        const detail::Estimate e = rule.integrate(triangle, heap);
+        pieces.push({triangle, e});
+        value += e.value;
+        error += e.error;
+    }
+    while (error > tolerance * std::abs(value + plateaus_volume) && pieces.size() < kMaxPieces) {
+        const Piece worst = pieces.top();
+        pieces.pop();
+        value -= worst.estimate.value;
+        error -= worst.estimate.error;
+        for (const detail::Triangle& child : quadrisected(worst.triangle)) {
+            const detail::Estimate e = rule.integrate(child, heap);
+            pieces.push({child, e});
+            value += e.value;
+            error += e.error;
+        }
+    }
+    // Sum afresh: the running totals have shed and regained many terms.
+    for (; !pieces.empty(); pieces.pop()) {
+        volume.value += pieces.top().estimate.value;
+        volume.error += pieces.top().estimate.error;
     }
     return volume;
 }
 
-detail::Estimate torque_on_mesh(const ValidSection& section, const SectionMesh& mesh, const detail::TriangleRule& rule) {
+detail::Estimate torque_on_mesh(const ValidSection& section, const SectionMesh& mesh, double tolerance) {
     detail::Estimate torque;
     for (std::size_t p = 0; p < section.parts().size(); ++p) {
         const Part& part = section.parts()[p];
         const double factor = 2.0 * shear_yield_stress(part.material.fy, section.shear());  // Nadai: T_p = 2·τy·V
-        const detail::Estimate v = heap_volume(mesh, part, p, rule);
+        const detail::Estimate v = heap_volume(mesh, part, p, tolerance);
         torque.value += factor * v.value;
         torque.error += factor * v.error;
     }
@@ -97,7 +140,7 @@ PlasticTorsion plastic_torsion(const ValidSection& section, const TorsionOptions
     mesh_options.refine_shape = true;
     const SectionMesh mesh = mesh_section(section, mesh_options);
     // The estimate adds the outer and the largest inner one, each up to the tolerance: a quarter of it.
-    detail::Estimate torque = torque_on_mesh(section, mesh, detail::TriangleRule::adaptive(0.25 * options.relative_tolerance));
+    detail::Estimate torque = torque_on_mesh(section, mesh, 0.25 * options.relative_tolerance);
     torque.error += 16.0 * std::numeric_limits<double>::epsilon() * torque.value;  // summation over the triangles
     return {torque.value, torque.error, mesh.triangles.size(), torque.error <= options.relative_tolerance * torque.value};
 }

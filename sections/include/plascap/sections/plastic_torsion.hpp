@@ -5,8 +5,9 @@
 //   φ(p) = min(d(p, outer), min_k (c_k + d(p, hole_k))),
 // c_k the hole's plateau: the shortest path from the outer boundary to hole k over the gaps
 // between boundaries (Dijkstra), and the volume is ∫φ dA over the material + Σ c_k·A_k.
-// φ has kinks along the medial axis, so each triangle of a shape-refined mesh is integrated by the
-// adaptive rule of the cubature route to the tolerance, and the estimates are summed.
+// φ has kinks along the medial axis, so the integral over a shape-refined mesh is globally adaptive:
+// a 4 × 4 Gauss rule per triangle with the estimate |Q(4) − Q(2)|, the triangle of the largest
+// estimate quadrisected until the estimates add up to the tolerance (docs/elastic-and-torsion.md).
 // τy per part (Tresca or von Mises of its fy); parts are added, not welded.
 #include <cstddef>
 

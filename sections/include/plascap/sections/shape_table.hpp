@@ -23,8 +23,10 @@ struct ShapeTableRow {
     ElasticProperties elastic;           // A, Ixx, Izz, Wx, Wz, ...
     Capacities capacities;               // all six, exact route
     double Wpl_x = 0.0, Wpl_z = 0.0;     // plastic moduli Mx/fy, Mz/fy [m³] (EN Wpl,y and Wpl,z)
-    std::optional<TorsionConstant> J;    // with ShapeTableOptions::torsion
-    std::optional<PlasticTorsion> T_p;   // with ShapeTableOptions::torsion
+    // With ShapeTableOptions::torsion: J by FEM and T_p by the sand heap, except for circular tubes
+    // and bars, whose closed forms are exact for the true circle (error 0).
+    std::optional<TorsionConstant> J;
+    std::optional<PlasticTorsion> T_p;
 };
 
 struct ShapeTableOptions {
@@ -32,10 +34,12 @@ struct ShapeTableOptions {
     bool torsion = true;                  // compute J (FEM) and T_p (sand heap)
     TorsionOptions J_options{1e-4};       // J to 1e-4 relative
     TorsionOptions T_p_options{1e-3};     // T_p to 1e-3 relative
-    // T_p is computed on the shape drawn with this coarser arc tolerance: the sand heap's cost grows
-    // with the vertex count, and arcs drawn to 1e-4 of the area move T_p by at most 2.5e-4 against
-    // 1e-6 on the rows measured (IPE 300, HEB 200, UPE 200, L 60x40x5, SHS 200x200x10;
-    // docs/shapes.md) — inside the 1e-3 target with the quadrature's own estimate (~3e-4).
+    // J and T_p are computed on the shape drawn with coarser arcs: their cost grows with the vertex
+    // count, and coarser arcs move them little against arcs drawn to 1e-6 (measured on IPE 300,
+    // HEB 200, HEM 1000, UPE 200, L 60x40x5, SHS 200x200x10; docs/shapes.md): arcs to 1e-5 move J
+    // by at most 5e-5, arcs to 1e-4 move T_p by at most 2.5e-4 — inside J's 1e-4 and T_p's 1e-3
+    // together with the estimates.
+    ShapeOptions J_shape{1e-5};
     ShapeOptions T_p_shape{1e-4};
     unsigned threads = 0;                 // 0: std::thread::hardware_concurrency()
     // Called after each finished row (from a worker thread, one call at a time).
