@@ -16,7 +16,6 @@ void require(bool ok) {
     if (!ok) std::abort();
 }
 
-double dot(const plascap::Vec3& a, const plascap::Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 void check(const plascap::Scene& s) {
     require(s.dt > 0.0 && std::isfinite(s.duration) && s.steps() >= 1 && s.steps() <= 10000000);
@@ -30,7 +29,7 @@ void check(const plascap::Scene& s) {
     for (const plascap::SceneJoint& j : s.joints) {
         require(j.b < s.bodies.size() && (!j.a || (*j.a < s.bodies.size() && *j.a != j.b)));
         for (std::size_t i = 0; i < 3; ++i) {
-            for (std::size_t k = 0; k < 3; ++k) require(std::abs(dot(j.axes[i], j.axes[k]) - (i == k ? 1.0 : 0.0)) < 1e-9);
+            for (std::size_t k = 0; k < 3; ++k) require(std::abs(plascap::dot(j.axes[i], j.axes[k]) - (i == k ? 1.0 : 0.0)) < 1e-9);
         }
         plascap::validate_joint_settings(j.settings, j.name);  // throws InputError: not expected here
     }
