@@ -19,8 +19,9 @@ struct PartTotals {
 
 PartTotals sum_parts(const ValidSection& section) {
     PartTotals totals;
-    for (const Part& part : section.parts()) {
-        const RingMoments m = part_moments(part);
+    for (std::size_t p = 0; p < section.parts().size(); ++p) {
+        const Part& part = section.parts()[p];
+        const RingMoments& m = section.part_moments()[p];
         totals.force += part.material.fy * m.area;                                          // eq. 2.10
         totals.compression += part.material.compression_strength() * m.area;               // eq. 2.10 with fc
         totals.shear_force += shear_yield_stress(part.material.fy, section.shear()) * m.area;  // eq. 2.11

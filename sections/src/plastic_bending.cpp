@@ -119,10 +119,11 @@ struct PartSummary {
 
 std::vector<PartSummary> summarize_parts(const ValidSection& section, BendingAxis axis, TensionSide tension) {
     std::vector<PartSummary> parts;
-    for (const Part& part : section.parts()) {
+    for (std::size_t p = 0; p < section.parts().size(); ++p) {
+        const Part& part = section.parts()[p];
         PartSummary s{level_of(part.outer[0], axis), level_of(part.outer[0], axis), 0.0, 0.0, 0.0, 0.0};
         for (Point q : part.outer) s.lo = std::min(s.lo, level_of(q, axis)), s.hi = std::max(s.hi, level_of(q, axis));
-        const RingMoments m = part_moments(part);
+        const RingMoments& m = section.part_moments()[p];
         const Strengths strength = strengths_of(part.material, tension);
         s.force_if_below = strength.below * m.area;
         s.force_if_above = strength.above * m.area;

@@ -22,11 +22,19 @@ LevelPoint to_level(Point p, BendingAxis axis, double t) {
     return axis == BendingAxis::X ? LevelPoint{p.z - t, p.x} : LevelPoint{p.x - t, p.z};
 }
 
-// ∮ v du and ∮ v u du along the straight segment a→b (exact for linear v(u)).
-void add_segment(LevelPoint a, LevelPoint b, double& area, double& moment) {
+// The same with the axis fixed at compile time, for the per-edge loops.
+template <BendingAxis Axis>
+LevelPoint to_level(Point p, double t) {
+    if constexpr (Axis == BendingAxis::X) return {p.z - t, p.x};
+    else return {p.x - t, p.z};
+}
+
+// 2·∮ v du and 6·∮ v u du along the straight segment a→b (exact for linear v(u)); the factors ½ and
+// ⅙ are applied once per ring, not per edge.
+void add_segment(LevelPoint a, LevelPoint b, double& twice_area, double& six_moment) {
     const double du = b.u - a.u;
-    area += 0.5 * (a.v + b.v) * du;
-    moment += du * (2.0 * a.v * a.u + a.v * b.u + b.v * a.u + 2.0 * b.v * b.u) / 6.0;
+    twice_area += (a.v + b.v) * du;
+    six_moment += du * (2.0 * a.v * a.u + a.v * b.u + b.v * a.u + 2.0 * b.v * b.u);
 }
 
 // The point of segment a→b where u = 0 (a and b strictly on opposite sides).
@@ -57,19 +65,23 @@ RingMoments ring_moments(const Ring& ring) {
     return m;
 }
 
-LevelCut cut_at(const Ring& ring, BendingAxis axis, double t) {
+namespace {
+
+template <BendingAxis Axis>
+LevelCut cut_ring_at(const Ring& ring, double t) {
+    constexpr BendingAxis axis = Axis;
     LevelCut cut;
     cut.vertex_below = -std::numeric_limits<double>::infinity();
     cut.vertex_above = std::numeric_limits<double>::infinity();
     double area_below = 0.0, moment_below = 0.0, area_above = 0.0, moment_above = 0.0;
     const std::size_t n = ring.size();
     for (std::size_t i = 0; i < n; ++i) {
-        const double level = level_of(ring[i], axis);
-        if (level <= t) cut.vertex_below = std::max(cut.vertex_below, level);
+        const LevelPoint a = to_level<Axis>(ring[i], t);
+        const LevelPoint b = to_level<Axis>(ring[next_index(i, n)], t);
+        const double level = a.u + t;
+        if (a.u <= 0.0) cut.vertex_below = std::max(cut.vertex_below, level);
         else cut.vertex_above = std::min(cut.vertex_above, level);
 
-        const LevelPoint a = to_level(ring[i], axis, t);
-        const LevelPoint b = to_level(ring[next_index(i, n)], axis, t);
         if (a.u <= 0.0 && b.u <= 0.0) {
             add_segment(a, b, area_below, moment_below);
         } else if (a.u >= 0.0 && b.u >= 0.0) {
@@ -90,13 +102,19 @@ LevelCut cut_at(const Ring& ring, BendingAxis axis, double t) {
         }
     }
     const double sigma = orientation_factor(axis);
-    cut.area_below = sigma * area_below;
-    cut.area_above = sigma * area_above;
-    cut.moment_below = sigma * moment_below;
-    cut.moment_above = sigma * moment_above;
+    cut.area_below = 0.5 * sigma * area_below;
+    cut.area_above = 0.5 * sigma * area_above;
+    cut.moment_below = sigma * moment_below / 6.0;
+    cut.moment_above = sigma * moment_above / 6.0;
     cut.chord *= sigma;
     cut.chord_slope *= sigma;
     return cut;
+}
+
+}  // namespace
+
+LevelCut cut_at(const Ring& ring, BendingAxis axis, double t) {
+    return axis == BendingAxis::X ? cut_ring_at<BendingAxis::X>(ring, t) : cut_ring_at<BendingAxis::Z>(ring, t);
 }
 
 RingMoments part_moments(const Part& part) {
@@ -157,12 +175,12 @@ double distance_integral(const Ring& ring, Point c) {
             const double g0 = s0 >= 0.0 ? s0 + r0 : h * h / (r0 - s0);
             const double g1 = s1 >= 0.0 ? s1 + r1 : h * h / (r1 - s1);
             const double log_ratio = g0 > 0.0 && g1 > 0.0 ? std::log(g1 / g0) : 0.0;  // 0 only if h² underflows
-            const double triangle = h / 6.0 * (s1 * r1 - s0 * r0 + h * h * log_ratio);
+            const double triangle = h * (s1 * r1 - s0 * r0 + h * h * log_ratio);  // ×6
             sum += cross > 0.0 ? triangle : -triangle;
         }
         ax = bx, az = bz, r0 = r1;
     }
-    return sum;
+    return sum / 6.0;
 }
 
 }  // namespace plascap

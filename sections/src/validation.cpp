@@ -232,6 +232,7 @@ ValidSection validate_section(const Section& section) {
         for (Ring& hole : part.holes)
             for (Point& q : hole) q = valid.to_local(q);
         for (Bar& bar : part.bars) bar.at = valid.to_local(bar.at);
+        valid.part_moments_.push_back(part_moments(part));  // every capacity needs them: once here
     }
     return valid;
 }

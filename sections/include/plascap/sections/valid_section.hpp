@@ -11,12 +11,16 @@
 #include <vector>
 
 #include "plascap/sections/geometry.hpp"
+#include "plascap/sections/ring_integrals.hpp"
 
 namespace plascap {
 
 class ValidSection {
 public:
     const std::vector<Part>& parts() const { return parts_; }  // in local coordinates
+    // Area and first moments of each part (local coordinates; outer ring less its holes, bars not
+    // counted), computed once here for every integral that needs them.
+    const std::vector<RingMoments>& part_moments() const { return part_moments_; }
     Point local_origin() const { return origin_; }              // section coordinates of local (0, 0)
     ShearCriterion shear() const { return shear_; }
     const std::optional<Point>& reference() const { return reference_; }  // section coordinates
@@ -30,6 +34,7 @@ private:
     ValidSection() = default;
 
     std::vector<Part> parts_;
+    std::vector<RingMoments> part_moments_;
     Point origin_;
     ShearCriterion shear_ = ShearCriterion::Tresca;
     std::optional<Point> reference_;
