@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <regex>
 
+#include "designation_text.hpp"
 #include "plascap/edit_distance.hpp"
 #include "plascap/input_error.hpp"
 #include "plascap/json_message.hpp"
@@ -65,19 +66,8 @@ std::string lower(std::string_view text) {
 
 std::string designation_key(std::string_view designation) {
     std::string key;
-    for (std::size_t i = 0; i < designation.size(); ++i) {
-        const unsigned char c = static_cast<unsigned char>(designation[i]);
-        if (c == 0xC3 && i + 1 < designation.size() && static_cast<unsigned char>(designation[i + 1]) == 0x97) {
-            key += 'X';  // '×' in UTF-8
-            ++i;
-        } else if (c == '*') {
-            key += 'X';
-        } else if (c == ',') {
-            key += '.';
-        } else if (!std::isspace(c) && c != '-' && c != '_') {
-            key += static_cast<char>(std::toupper(c));
-        }
-    }
+    for (char c : detail::designation_upper(designation))
+        if (!std::isspace(static_cast<unsigned char>(c)) && c != '-' && c != '_') key += c;
     static const std::regex he(R"(^HE([0-9]+)(A|B|M)$)");
     std::smatch m;
     if (std::regex_match(key, m, he)) key = "HE" + m[2].str() + m[1].str();

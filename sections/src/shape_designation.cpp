@@ -6,6 +6,7 @@
 #include <sstream>
 #include <vector>
 
+#include "designation_text.hpp"
 #include "plascap/input_error.hpp"
 
 namespace plascap {
@@ -13,20 +14,6 @@ namespace {
 
 [[noreturn]] void fail(std::string_view text, const std::string& what) {
     throw InputError("shape \"" + std::string(text) + "\": " + what);
-}
-
-std::string upper(std::string_view text) {
-    std::string out;
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        const unsigned char c = static_cast<unsigned char>(text[i]);
-        if (c == 0xC3 && i + 1 < text.size() && static_cast<unsigned char>(text[i + 1]) == 0x97) {
-            out += 'X';  // '×'
-            ++i;
-        } else {
-            out += c == '*' ? 'X' : c == ',' ? '.' : static_cast<char>(std::toupper(c));
-        }
-    }
-    return out;
 }
 
 // A plain decimal number (no sign, no exponent).
@@ -49,7 +36,7 @@ struct Parametric {
 
 Parametric split(std::string_view text) {
     static const std::regex form(R"(^\s*(I|U|L|T|BOX|TUBE|ROUND|FLAT)\s+([0-9.]+(?:\s*X\s*[0-9.]+)*)((?:\s+.*)?)$)");
-    const std::string up = upper(text);
+    const std::string up = detail::designation_upper(text);
     std::smatch m;
     if (!std::regex_match(up, m, form)) return {};
     Parametric p{m[1].str(), {}, {}};
