@@ -205,6 +205,7 @@ SectionResultant YieldSurface::block(const SectionResultant& normal) const {
 }
 
 SectionResultant YieldSurface::full_tension() const { return as_resultant(impl_->blocks.all_tension()); }
+SectionResultant YieldSurface::scale() const { return as_resultant(impl_->scale); }
 SectionResultant YieldSurface::full_compression() const { return as_resultant(impl_->blocks.all_compression()); }
 
 }  // namespace plascap

@@ -70,6 +70,9 @@ public:
     // about the reference, zero for a homogeneous section).
     SectionResultant full_tension() const;
     SectionResultant full_compression() const;
+    // The size of each component: the mean of the squash loads, and the mean of the plastic
+    // moments about the reference either way (the solver's units; curves sample by them).
+    SectionResultant scale() const;
 
 private:
     struct Impl;
