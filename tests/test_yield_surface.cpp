@@ -5,6 +5,7 @@
 
 #include "plascap/input_error.hpp"
 #include "plascap/sections/interaction_curves.hpp"
+#include "plascap/sections/section_yield.hpp"
 #include "plascap/sections/shape_designation.hpp"
 #include "plascap/sections/shapes.hpp"
 #include "plascap/sections/yield_surface.hpp"
@@ -260,6 +261,51 @@ TEST(InteractionCurves, RolledISectionAgainstEurocodeApproximations) {
     RecordProperty("worst_weak", std::to_string(worst_z));
     std::printf("EN 1993-1-1 6.2.9.1 vs exact, IPE 300: strong axis %.4f (%.4f from n = 0.3), weak axis %.4f of Mpl\n",
                 worst_x, worst_x_past_onset, worst_z);
+}
+
+}  // namespace
+}  // namespace plascap
+
+namespace plascap {
+namespace {
+
+// A thin tube under N and T carries uniform σ = N/A and τ = T/(2π·R²·t); von Mises,
+// σ² + 3τ² = fy², is then n² + t² = 1 with Np = fy·A and Tp = (fy/√3)·2π·R²·t: the reduction
+// U = √(u_NM² + η²) is exact there.
+TEST(SectionYield, ThinTubeUnderAxialForceAndTorsionIsVonMises) {
+    const double R = 0.1, t = 0.001, fy = 355e6;
+    Ring outer = regular_polygon_ring(2048, R + t / 2), hole = regular_polygon_ring(2048, R - t / 2);
+    std::reverse(hole.begin(), hole.end());
+    const ValidSection v = validate_section(section_of({part(outer, fy, {hole})}));
+    const double A = 2 * kPi * R * t, Tp = fy / std::sqrt(3.0) * 2 * kPi * R * R * t;
+    const SectionYield yield(YieldSurface(v), {fy / std::sqrt(3.0) * A, fy / std::sqrt(3.0) * A, Tp});
+    for (double n : {0.0, 0.3, 0.6, 0.9}) {
+        const double sigma = n * fy, tau = std::sqrt((fy * fy - sigma * sigma) / 3.0);
+        const double N = sigma * A, T = tau * 2 * kPi * R * R * t;
+        EXPECT_NEAR(yield.utilisation({N, 0, 0, 0, 0, T}), 1.0, 1e-5) << n;  // the 2048-gon's area: 1e-5
+        EXPECT_NEAR(yield.utilisation({-N, 0, 0, 0, 0, -T}), 1.0, 1e-5) << n;
+    }
+}
+
+// Shear and torsion add linearly into η, and the gradient is U's: central differences.
+TEST(SectionYield, ShearTorsionShareAndGradient) {
+    const ValidSection v = validate_section(rectangle_section(0.2, 0.3, 355e6));
+    const SectionYield yield(YieldSurface(v), {1e6, 2e6, 5e4});
+    EXPECT_NEAR(shear_torsion_share({0, 3e5, 4e5 * 2, 0, 0, -1e4}, yield.shear_torsion()), 0.5 + 0.2, 1e-15);
+    const SectionLoads load{2e6, 2e5, -3e5, 1e5, -4e4, 1e4};
+    const SectionYieldState st = yield.evaluate(load);
+    const auto du = [&](double SectionLoads::*c, double step) {
+        SectionLoads plus = load, minus = load;
+        plus.*c += step, minus.*c -= step;
+        return (yield.utilisation(plus) - yield.utilisation(minus)) / (2 * step);
+    };
+    EXPECT_NEAR(du(&SectionLoads::N, 10.0), st.gradient.N, 1e-5 * std::abs(st.gradient.N));
+    EXPECT_NEAR(du(&SectionLoads::Qx, 1.0), st.gradient.Qx, 1e-5 * std::abs(st.gradient.Qx));
+    EXPECT_NEAR(du(&SectionLoads::Qz, 1.0), st.gradient.Qz, 1e-5 * std::abs(st.gradient.Qz));
+    EXPECT_NEAR(du(&SectionLoads::Mx, 1.0), st.gradient.Mx, 1e-5 * std::abs(st.gradient.Mx));
+    EXPECT_NEAR(du(&SectionLoads::Mz, 1.0), st.gradient.Mz, 1e-5 * std::abs(st.gradient.Mz));
+    EXPECT_NEAR(du(&SectionLoads::T, 1.0), st.gradient.T, 1e-5 * std::abs(st.gradient.T));
+    EXPECT_THROW(SectionYield(YieldSurface(v), {1e6, 0.0, 5e4}), InputError);
 }
 
 }  // namespace
