@@ -418,3 +418,71 @@ TEST(SectionCalc, VersionIsTheProjects) {
     EXPECT_EQ(run.exit_code, 0);
     EXPECT_EQ(run.out, std::string("section-calc (plascap) ") + PLASCAP_VERSION + "\n");
 }
+
+namespace plascap {
+namespace {
+
+// --load on a 0.2 × 0.3 m rectangle, fy = 355 MPa: n² + m = 1 (closed form) gives U = 1; half of
+// that load gives 0.5; the JSON key "utilisation" is a number.
+TEST(SectionCalc, LoadUtilisationOfARectangle) {
+    const double fy = 355e6, Np = fy * 0.2 * 0.3, Mp = fy * 0.2 * 0.09 / 4;
+    char load[200];
+    std::snprintf(load, sizeof load, "N=%.17g,Mx=%.17g", 0.5 * Np, 0.75 * Mp);
+    CliRun run = section_calc(std::string("--rect 0.2 0.3 --fy 355e6 --json --load ") + load);
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    nlohmann::json j = nlohmann::json::parse(run.out);
+    EXPECT_NEAR(j["utilisation"].get<double>(), 1.0, 1e-9);
+    EXPECT_NEAR(j["load_check"]["surface_point"]["N"].get<double>(), 0.5 * Np, 1e-9 * Np);
+    std::snprintf(load, sizeof load, "N=%.17g,Mx=%.17g", 0.25 * Np, 0.375 * Mp);
+    run = section_calc(std::string("--rect 0.2 0.3 --fy 355e6 --load ") + load);
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_NE(run.out.find("utilisation  0.5"), std::string::npos) << run.out;
+    // Torsion: the sand heap's T_p by default, eq. 2.14 with --torsion paper.
+    run = section_calc("--rect 0.2 0.3 --fy 355e6 --json --load My=1e4");
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    j = nlohmann::json::parse(run.out);
+    const double Tp = j["load_check"]["torsion"]["value"].get<double>();
+    EXPECT_NEAR(j["utilisation"].get<double>(), 1e4 / Tp, 1e-12);
+    // T_p of a b × h rectangle (b ≤ h), τy = fy/2: τy·b²(3h − b)/6 (Nadai's sand heap).
+    EXPECT_NEAR(Tp, fy / 2 * 0.04 * (0.9 - 0.2) / 6, 1e-4 * Tp);
+    run = section_calc("--rect 0.2 0.3 --fy 355e6 --json --load My=1e4 --torsion paper");
+    j = nlohmann::json::parse(run.out);
+    EXPECT_EQ(j["load_check"]["torsion"]["capacity"], "paper");
+    EXPECT_DOUBLE_EQ(j["load_check"]["torsion"]["value"].get<double>(), j["My"].get<double>());
+}
+
+TEST(SectionCalc, InteractionCurvesInJsonAndSvg) {
+    const std::string svg = ::testing::TempDir() + "plascap_interaction.svg";
+    const CliRun run = section_calc("--shape \"HEB 200\" --material S355 --json --interaction --samples 40 --load N=1e6,Mz=2e4 --svg \"" + svg + "\"");
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const nlohmann::json j = nlohmann::json::parse(run.out);
+    ASSERT_EQ(j["interaction"]["N_Mx"].size(), 40u);
+    ASSERT_EQ(j["interaction"]["Mx_Mz"]["points"].size(), 40u);
+    EXPECT_DOUBLE_EQ(j["interaction"]["Mx_Mz"]["N"].get<double>(), 1e6);
+    // The N–Mx curve's point on the N axis is the squash load, and its Mx at N = 0 is Mx.
+    EXPECT_NEAR(j["interaction"]["N_Mx"][0][0].get<double>(), j["N"].get<double>(), 1e-9 * j["N"].get<double>());
+    EXPECT_NEAR(j["interaction"]["N_Mx"][10][1].get<double>(), j["Mx"].get<double>(), 1e-9 * j["Mx"].get<double>());
+    std::stringstream text;
+    text << std::ifstream(svg).rdbuf();
+    EXPECT_NE(text.str().find("N-Mx (Mz = 0)"), std::string::npos);
+    EXPECT_NE(text.str().find("Mx-Mz at N = 1e+06 N"), std::string::npos);
+    std::remove(svg.c_str());
+}
+
+TEST(SectionCalc, BadLoadsSayWhatIsWrong) {
+    const auto message = [](const std::string& args) {
+        const CliRun run = section_calc("--rect 0.2 0.3 --fy 355e6 " + args);
+        EXPECT_EQ(run.exit_code, 2) << args;
+        return run.err;
+    };
+    EXPECT_NE(message("--load Mq=3").find("unknown component \"Mq\""), std::string::npos);
+    EXPECT_NE(message("--load N=abc").find("N = \"abc\" is not a finite number"), std::string::npos);
+    EXPECT_NE(message("--load N=1,N=2").find("N is given twice"), std::string::npos);
+    EXPECT_NE(message("--load N").find("is not NAME=VALUE"), std::string::npos);
+    EXPECT_NE(message("--load N=1 --torsion sand").find("unknown torsion capacity \"sand\""), std::string::npos);
+    EXPECT_NE(message("--interaction --load N=2.2e7").find("must lie strictly between"), std::string::npos);
+    EXPECT_NE(message("--interaction --samples 3").find("samples must be between 8 and 100000"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace plascap

@@ -4,6 +4,8 @@
 #include <string>
 
 #include "plascap/input_error.hpp"
+#include "plascap/sections/capacities.hpp"
+#include "plascap/sections/plastic_torsion.hpp"
 
 namespace plascap {
 
@@ -14,6 +16,22 @@ SectionYield::SectionYield(YieldSurface surface, const ShearTorsionCapacities& c
             throw InputError(std::string("section yield condition: the ") + name + " capacity must be positive and finite (got " +
                              std::to_string(value) + ")");
     }
+}
+
+SectionYield section_yield(const ValidSection& section, TorsionCapacity torsion) {
+    const Capacities c = compute_capacities(section, CapacitySet::parse(torsion == TorsionCapacity::Paper ? "Qx,Qz,My" : "Qx,Qz"));
+    const double T = torsion == TorsionCapacity::Paper ? *c.My : plastic_torsion(section).T;
+    return SectionYield(YieldSurface(section), {*c.Qx, *c.Qz, T});
+}
+
+const char* torsion_capacity_name(TorsionCapacity torsion) {
+    return torsion == TorsionCapacity::Paper ? "paper" : "fully-plastic";
+}
+
+TorsionCapacity torsion_capacity_from_name(const std::string& name, const std::string& where) {
+    if (name == "fully-plastic") return TorsionCapacity::FullyPlastic;
+    if (name == "paper") return TorsionCapacity::Paper;
+    throw InputError(where + ": unknown torsion capacity \"" + name + "\" (available: fully-plastic, paper)");
 }
 
 double shear_torsion_share(const SectionLoads& load, const ShearTorsionCapacities& c) {

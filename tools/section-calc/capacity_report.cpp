@@ -148,7 +148,9 @@ std::string capacity_table(const Capacities& c, const ReportContext& context) {
     return out.str();
 }
 
-std::string capacity_json(const Capacities& c, const ReportContext& context) {
+std::string capacity_json(const Capacities& c, const ReportContext& context) { return capacity_json_value(c, context).dump(2) + "\n"; }
+
+nlohmann::ordered_json capacity_json_value(const Capacities& c, const ReportContext& context) {
     nlohmann::ordered_json out;
     for (Capacity capacity : kAllCapacities)
         if (const std::optional<double> value = c.get(capacity)) out[to_string(capacity)] = *value;
@@ -194,7 +196,7 @@ std::string capacity_json(const Capacities& c, const ReportContext& context) {
     out["parts"] = context.section->parts().size();
     out["vertices"] = context.section->vertex_count();
     out["units"] = {{"force", "N"}, {"moment", "N*m"}, {"length", "m"}, {"area", "m^2"}};
-    return out.dump(2) + "\n";
+    return out;
 }
 
 }  // namespace plascap::tools

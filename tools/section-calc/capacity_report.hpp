@@ -1,5 +1,6 @@
 #pragma once
 // How section-calc shows a result: a table for people, one JSON object for programs.
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "plascap/sections/capacities.hpp"
@@ -27,5 +28,6 @@ struct ReportContext {
 
 std::string capacity_table(const Capacities& capacities, const ReportContext& context);
 std::string capacity_json(const Capacities& capacities, const ReportContext& context);
+nlohmann::ordered_json capacity_json_value(const Capacities& capacities, const ReportContext& context);
 
 }  // namespace plascap::tools

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "capacity_report.hpp"
+#include "interaction_report.hpp"
 #include "material_listing.hpp"
 #include "section_svg.hpp"
 #include "shape_listing.hpp"
@@ -55,6 +56,10 @@ struct Options {
     bool elastic = false;
     std::optional<double> length;
     bool json = false;
+    std::string load;
+    bool interaction = false;
+    std::size_t samples = 72;
+    std::string torsion = "fully-plastic";
 };
 
 void add_options(CLI::App& app, Options& o) {
@@ -101,6 +106,16 @@ void add_options(CLI::App& app, Options& o) {
                                          "and EA, EI (modulus weighted) when every material gives E");
     app.add_option("--length", o.length, "With --elastic: the joint stiffness of a segment of this length [m]: EA/L, EI/L, "
                                          "12EI/L³, GJ/L");
+    app.add_option("--load", o.load, "Check a load on the exact yield surface: N=..,Mx=..,Mz=..[,Qx=..,Qz=..,My=..] in N and "
+                                     "N*m (omitted components are 0; N tension positive, Mx and Mz in the senses of the "
+                                     "capacities, about the joint point); prints the utilisation and the governing point "
+                                     "(docs/yield-surface.md)");
+    app.add_flag("--interaction", o.interaction, "Sample the N-Mx, N-Mz and Mx-Mz (at the load's N, else 0) curves of the "
+                                                 "exact surface: into the JSON, and as diagrams into the --svg file");
+    app.add_option("--samples", o.samples, "With --interaction: points per curve, 8 to 100000")->capture_default_str();
+    app.add_option("--torsion", o.torsion, "With --load: the torsion capacity for My: fully-plastic (T_p, the sand heap) or "
+                                           "paper (eq. 2.14)")
+        ->capture_default_str();
     app.add_flag("--json", o.json, "Print one JSON object instead of the table");
     app.set_version_flag("--version", "section-calc (plascap) " PLASCAP_VERSION);
 }
@@ -239,6 +254,35 @@ int run_table(const Options& o, const plascap::MaterialCatalogue& catalogue, con
     return 0;
 }
 
+// What --load and --interaction ask for.
+struct YieldReport {
+    std::optional<plascap::SectionLoads> load;
+    std::optional<plascap::SectionYield> condition;
+    std::optional<plascap::tools::LoadCheck> check;
+    std::optional<plascap::tools::InteractionCurves> curves;
+};
+
+YieldReport yield_report(const Options& o, const plascap::ValidSection& valid) {
+    YieldReport r;
+    const plascap::TorsionCapacity torsion = plascap::torsion_capacity_from_name(o.torsion, "--torsion");
+    if (o.load.empty() && o.torsion != "fully-plastic") throw plascap::InputError("--torsion goes with --load");
+    if (!o.interaction && o.samples != 72) throw plascap::InputError("--samples goes with --interaction");
+    if (o.load.empty() && !o.interaction) return r;
+    if (o.method != "exact") throw plascap::InputError("--load and --interaction use the exact surface: leave out --method cubature");
+    if (!o.load.empty()) {
+        r.load = plascap::tools::parse_load(o.load);
+        // T_p costs a mesh integration: only when the load twists.
+        const plascap::TorsionCapacity used = r.load->T != 0.0 ? torsion : plascap::TorsionCapacity::Paper;
+        r.condition = plascap::section_yield(valid, used);
+        r.check = plascap::tools::check_load(*r.condition, *r.load, used);
+    }
+    if (o.interaction) {
+        const plascap::YieldSurface surface(valid);
+        r.curves = plascap::tools::sample_interaction(surface, r.load ? r.load->N : 0.0, o.samples);
+    }
+    return r;
+}
+
 int run(const Options& o) {
     if (o.method != "exact" && o.method != "cubature")
         throw plascap::InputError("--method " + o.method + ": unknown method (available: exact, cubature)");
@@ -297,9 +341,21 @@ int run(const Options& o) {
             context.length = *o.length;
         }
     }
-    if (!o.svg.empty()) plascap::tools::write_section_svg(o.svg, valid, capacities, cubature.max_area, source);
-    std::cout << (o.json ? plascap::tools::capacity_json(capacities, context)
-                         : plascap::tools::capacity_table(capacities, context));
+    const YieldReport yield = yield_report(o, valid);
+    std::optional<plascap::tools::SvgPanel> panels;
+    if (yield.curves) panels = plascap::tools::interaction_panels(*yield.curves, yield.load);
+    if (!o.svg.empty())
+        plascap::tools::write_section_svg(o.svg, valid, capacities, cubature.max_area, source, panels ? &*panels : nullptr);
+    if (o.json) {
+        nlohmann::ordered_json out = plascap::tools::capacity_json_value(capacities, context);
+        if (yield.check) plascap::tools::add_load_check_json(out, *yield.check, *yield.condition);
+        if (yield.curves) plascap::tools::add_interaction_json(out, *yield.curves);
+        std::cout << out.dump(2) << "\n";
+        return 0;
+    }
+    std::cout << plascap::tools::capacity_table(capacities, context);
+    if (yield.check) std::cout << plascap::tools::load_check_text(*yield.check, *yield.condition);
+    if (yield.curves) std::cout << plascap::tools::interaction_text(*yield.curves);
     return 0;
 }
 

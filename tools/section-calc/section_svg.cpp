@@ -248,10 +248,12 @@ void draw_scale_and_title(std::ostream& svg, const Canvas& canvas, const std::st
 }  // namespace
 
 void write_section_svg(const std::string& path, const ValidSection& section, const Capacities& capacities,
-                       double max_area, const std::string& title) {
+                       double max_area, const std::string& title, const SvgPanel* below) {
     const Canvas canvas(section);
     std::ostringstream svg;
-    svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << canvas.width() << "\" height=\"" << canvas.height()
+    const double width = below ? std::max(canvas.width(), below->width) : canvas.width();
+    const double height = canvas.height() + (below ? below->height : 0.0);
+    svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
         << "\" font-family=\"sans-serif\" font-size=\"13\">\n<rect width=\"100%\" height=\"100%\" fill=\"#fff\"/>\n";
     MaterialColours colours;
     draw_parts(svg, section, canvas, colours);
@@ -262,6 +264,7 @@ void write_section_svg(const std::string& path, const ValidSection& section, con
     draw_axes(svg, capacities, canvas);
     draw_points(svg, capacities, canvas);
     draw_scale_and_title(svg, canvas, title, triangles);
+    if (below) svg << "<g transform=\"translate(0," << canvas.height() << ")\">\n" << below->body << "</g>\n";
     svg << "</svg>\n";
     std::ofstream file(path);
     if (file) file << svg.str();

@@ -9,8 +9,14 @@
 
 namespace plascap::tools {
 
-// Throws InputError when the file cannot be written.
+// SVG elements of `width` × `height` px, drawn from (0, 0).
+struct SvgPanel {
+    std::string body;
+    double width = 0.0, height = 0.0;
+};
+
+// Throws InputError when the file cannot be written. `below`, if given, is drawn under the section.
 void write_section_svg(const std::string& path, const ValidSection& section, const Capacities& capacities,
-                       double max_area, const std::string& title);
+                       double max_area, const std::string& title, const SvgPanel* below = nullptr);
 
 }  // namespace plascap::tools

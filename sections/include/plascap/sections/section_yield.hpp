@@ -15,6 +15,7 @@
 // (n² + t² = 1); the linear sum of shear and torsion is safe by convexity.
 #include <array>
 #include <optional>
+#include <string>
 
 #include "plascap/sections/yield_surface.hpp"
 
@@ -55,6 +56,14 @@ private:
     YieldSurface surface_;
     ShearTorsionCapacities capacities_;
 };
+
+// The yield condition of a section: its exact N–M surface, Qxp = Qzp = Σ τy·A (eq. 2.11) and the
+// torsion capacity chosen (T_p by the sand heap, to its default tolerance, or eq. 2.14).
+SectionYield section_yield(const ValidSection& section, TorsionCapacity torsion = TorsionCapacity::FullyPlastic);
+
+const char* torsion_capacity_name(TorsionCapacity torsion);  // "fully-plastic", "paper"
+// Throws InputError naming `where` for another name.
+TorsionCapacity torsion_capacity_from_name(const std::string& name, const std::string& where);
 
 // The shear-and-torsion share η of the header.
 double shear_torsion_share(const SectionLoads& load, const ShearTorsionCapacities& capacities);
