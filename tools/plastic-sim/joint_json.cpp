@@ -6,7 +6,9 @@
 #include "plascap/input_error.hpp"
 #include "plascap/json_message.hpp"
 #include "plascap/materials/material_json.hpp"
+#include "plascap/adapters/section_yield_condition.hpp"
 #include "plascap/sections/capacities.hpp"
+#include "plascap/sections/plastic_torsion.hpp"
 #include "plascap/sections/elastic_properties.hpp"
 #include "plascap/sections/joint_stiffness.hpp"
 #include "plascap/sections/section_json.hpp"
@@ -120,7 +122,50 @@ struct Strength {
     Capacities capacities;
     PerDof<std::optional<double>> stiffness;
     std::optional<double> length;
+    std::shared_ptr<const YieldCondition> yield_condition;  // "yield_surface": "coupled"
 };
+
+// "yield_surface" (coupled | box) and "torsion" (fully-plastic | paper) of a section joint.
+struct YieldChoice {
+    bool coupled = true;
+    TorsionCapacity torsion = TorsionCapacity::FullyPlastic;
+};
+
+YieldChoice yield_choice(const Json& j, const std::string& where, bool from_section) {
+    YieldChoice c;
+    if (j.contains("yield_surface")) {
+        const std::string name = text(j["yield_surface"], where + ".yield_surface");
+        if (name != "coupled" && name != "box")
+            throw InputError(where + ".yield_surface: unknown \"" + name + "\" (available: coupled, box)");
+        c.coupled = name == "coupled";
+        if (c.coupled && !from_section)
+            throw InputError(where + ".yield_surface: \"coupled\" needs the section (\"section\" or \"shape\"), not \"capacities\"");
+    }
+    if (j.contains("torsion")) {
+        if (!from_section) throw InputError(where + ".torsion: chooses a section's torsion capacity; \"capacities\" give My directly");
+        c.torsion = torsion_capacity_from_name(text(j["torsion"], where + ".torsion"), where + ".torsion");
+    }
+    if (!from_section) c.coupled = false;
+    return c;
+}
+
+// The section's coupled condition, and the box capacities that go with the choice: My the
+// torsion capacity chosen; with the coupled surface, N, Mx, Mz where it meets each axis.
+void apply_yield_choice(const ValidSection& valid, const YieldChoice& choice, bool needs_torsion, Strength& s) {
+    if (choice.torsion == TorsionCapacity::FullyPlastic && (needs_torsion || choice.coupled))
+        s.capacities.My = plastic_torsion(valid).T;
+    if (!choice.coupled) return;
+    s.yield_condition = section_yield_condition(SectionYield(YieldSurface(valid), {*s.capacities.Qx, *s.capacities.Qz, *s.capacities.My}));
+    const PerDof<double> up = s.yield_condition->axis_capacity(true), down = s.yield_condition->axis_capacity(false);
+    s.capacities.N = up[index(Dof::N)], s.capacities.N_neg = down[index(Dof::N)];
+    s.capacities.Mx = up[index(Dof::Mx)], s.capacities.Mx_neg = down[index(Dof::Mx)];
+    s.capacities.Mz = up[index(Dof::Mz)], s.capacities.Mz_neg = down[index(Dof::Mz)];
+}
+
+bool my_is_plastic(const Json& j) {
+    if (!j.contains("dofs") || !j["dofs"].is_object() || !j["dofs"].contains("My")) return true;  // default: plastic
+    return j["dofs"]["My"].is_string() && j["dofs"]["My"].get<std::string>() == "plastic";
+}
 
 Strength joint_strength(const Json& j, const std::string& where, const MaterialCatalogue& catalogue) {
     if (int(j.contains("capacities")) + int(j.contains("section")) + int(j.contains("shape")) != 1) {
@@ -133,6 +178,7 @@ Strength joint_strength(const Json& j, const std::string& where, const MaterialC
     if (j.contains("length")) s.length = positive_number(j["length"], where + ".length");
     if (j.contains("capacities")) {
         s.capacities = given_capacities(j["capacities"], where + ".capacities");
+        yield_choice(j, where, false);
         if (s.length) throw InputError(where + ".length: a stiffness from a length needs a \"section\" or \"shape\"");
     } else {
         // "shape": "HEB 200" is short for "section": {"shape": "HEB 200"} (docs/shapes.md).
@@ -144,6 +190,7 @@ Strength joint_strength(const Json& j, const std::string& where, const MaterialC
             return validate_section(parse_section_json(section.dump(), catalogue));
         });
         s.capacities = compute_capacities(valid);
+        apply_yield_choice(valid, yield_choice(j, where, true), my_is_plastic(j), s);
         if (s.length) s.stiffness = located(where + ".length", [&] { return beam_stiffness(valid, *s.length, where); });
     }
     if (j.contains("stiffness")) s.stiffness = given_stiffness(j["stiffness"], where + ".stiffness");
@@ -188,7 +235,7 @@ SceneJoint parse_joint(const Json& j, const std::string& where_in, const std::ve
     require_object(j, where_in);
     reject_unknown_keys(j, where_in, {"name", "a", "b", "anchor", "axis", "x_axis", "capacities", "section", "shape", "material",
                                       "stiffness", "length", "dofs", "max_plastic_displacement",
-                                      "max_plastic_rotation", "engage_at"});
+                                      "max_plastic_rotation", "engage_at", "yield_surface", "torsion"});
     SceneJoint joint;
     joint.name = text(member(j, "name", where_in), where_in + ".name");
     const std::string where = where_in + " (\"" + joint.name + "\")";
@@ -217,6 +264,7 @@ SceneJoint parse_joint(const Json& j, const std::string& where_in, const std::ve
         law.stiffness = strength.stiffness[index(dof)];
         joint.settings.laws[index(dof)] = law;
     }
+    joint.settings.yield_condition = strength.yield_condition;
     breaking_limits(j, where, material, strength.length, joint.settings);
     validate_joint_settings(joint.settings, where);
     return joint;

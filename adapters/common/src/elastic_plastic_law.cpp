@@ -32,13 +32,13 @@ void ElasticPlasticLaw::start(double position) {
     planned_position_ = position;
 }
 
-RowCommand ElasticPlasticLaw::plan(double position, double dt, double effective_mass) {
+RowCommand ElasticPlasticLaw::plan(double position, double dt, double effective_mass, std::optional<double> joint_bound) {
     planned_position_ = position;
     regime_ = choose_regime(law_.stiffness, effective_mass, dt);
     omega_dt_ = spring_omega_dt(law_.stiffness, effective_mass, dt);
     if (regime_ != Regime::ElasticPlastic) {
         // Paper §2: target velocity 0, force bounded by the capacity; plus the correction.
-        last_bound_ = hold_bound();
+        last_bound_ = joint_bound ? *joint_bound : hold_bound();
         RowCommand hold;
         hold.kind = RowCommand::Kind::Hold;
         hold.bound = last_bound_;
@@ -47,7 +47,7 @@ RowCommand ElasticPlasticLaw::plan(double position, double dt, double effective_
     }
     // Explicit spring force from the start-of-step position, capped at the capacities.
     const double spring = -*law_.stiffness * (position - plastic_offset_);
-    const double force = std::clamp(spring, -law_.capacity_positive, law_.capacity_negative);
+    const double force = coupled_ ? spring : std::clamp(spring, -law_.capacity_positive, law_.capacity_negative);
     RowCommand push;
     push.kind = RowCommand::Kind::Push;
     push.force = force;
@@ -64,7 +64,7 @@ double ElasticPlasticLaw::hold_bound() const {
 
 void ElasticPlasticLaw::settle(double position, double applied_force) {
     if (regime_ == Regime::ElasticPlastic) {
-        settle_elastic_plastic(position);
+        if (!coupled_) settle_elastic_plastic(position);
     } else {
         settle_rigid_plastic(position, applied_force);
     }
@@ -97,6 +97,12 @@ void ElasticPlasticLaw::settle_elastic_plastic(double position) {
     accumulated_ += step;
     dissipated_ += capacity * step;  // the force stays on the capacity while x_p moves
     plastic_offset_ = moved_to;
+}
+
+void ElasticPlasticLaw::flow(double step, double load) {
+    plastic_offset_ += step;
+    accumulated_ += std::abs(step);
+    dissipated_ += load * step;  // the joint's resisting force −load does −(−load)·step of work on the flow
 }
 
 double ElasticPlasticLaw::elastic_energy(double position) const {

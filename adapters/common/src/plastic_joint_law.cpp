@@ -1,12 +1,22 @@
 #include "plascap/adapters/plastic_joint_law.hpp"
 
+#include "coupled_yield.hpp"
+
 namespace plascap {
 
 PlasticJointLaw::PlasticJointLaw(const PlasticJointSettings& settings) : settings_(settings) {
     validate_joint_settings(settings, "plastic joint");
     for (Dof dof : kAllDofs) {
-        if (mode(dof) == DofMode::Plastic) laws_[index(dof)].emplace(settings.laws[index(dof)]);
+        if (mode(dof) != DofMode::Plastic) continue;
+        laws_[index(dof)].emplace(settings.laws[index(dof)]);
+        if (settings.yield_condition) laws_[index(dof)]->couple();
     }
+}
+
+PerDof<ElasticPlasticLaw*> PlasticJointLaw::plastic_laws() {
+    PerDof<ElasticPlasticLaw*> laws{};
+    for (std::size_t i = 0; i < kDofCount; ++i) laws[i] = laws_[i] ? &*laws_[i] : nullptr;
+    return laws;
 }
 
 const ElasticPlasticLaw* PlasticJointLaw::law(Dof dof) const {
@@ -23,8 +33,11 @@ void PlasticJointLaw::start(const PerDof<double>& positions) {
 PerDof<std::optional<RowCommand>> PlasticJointLaw::plan(const PerDof<double>& positions, double dt,
                                                         const PerDof<double>& effective_masses) {
     PerDof<std::optional<RowCommand>> commands;
+    PerDof<std::optional<double>> bounds;
+    if (settings_.yield_condition)
+        bounds = detail::coupled_hold_bounds(*settings_.yield_condition, hint_, last_loads_, plastic_laws());
     for (std::size_t i = 0; i < kDofCount; ++i) {
-        if (laws_[i]) commands[i] = laws_[i]->plan(positions[i], dt, effective_masses[i]);
+        if (laws_[i]) commands[i] = laws_[i]->plan(positions[i], dt, effective_masses[i], bounds[i]);
     }
     return commands;
 }
@@ -33,7 +46,10 @@ bool PlasticJointLaw::settle(const PerDof<double>& positions, const PerDof<doubl
     if (broken()) return false;
     for (std::size_t i = 0; i < kDofCount; ++i) {
         if (laws_[i]) laws_[i]->settle(positions[i], forces[i]);
+        last_loads_[i] = -forces[i];
     }
+    if (settings_.yield_condition)
+        detail::coupled_return_mapping(*settings_.yield_condition, hint_, positions, last_loads_, plastic_laws());
     if (plastic_displacement() > settings_.max_plastic_displacement ||
         plastic_rotation() > settings_.max_plastic_rotation) {
         broken_at_ = time;

@@ -41,11 +41,20 @@ public:
     void start(double position);
 
     // Before a step: the row command from the current position, the step and the row's effective
-    // mass (for eq. 3.2).
-    RowCommand plan(double position, double dt, double effective_mass);
+    // mass (for eq. 3.2). `hold_bound`, from a joint's coupled yield condition, replaces the
+    // capacity as the rigid-plastic row's bound this step.
+    RowCommand plan(double position, double dt, double effective_mass, std::optional<double> hold_bound = {});
 
     // After the step: the new position and the force the row applied (generalised, on b).
     void settle(double position, double applied_force);
+
+    // Part of a joint with a coupled yield condition (plastic_joint_law.hpp): the spring force is not
+    // capped at this dof's own capacities and settle() leaves its return mapping to the joint,
+    // which moves the plastic offset through flow().
+    void couple() { coupled_ = true; }
+    // The plastic offset moves by `step` under `load` (the section load, −force on b): the
+    // accumulated plastic motion grows by |step| and the dissipated energy by load·step.
+    void flow(double step, double load);
 
     const DofLaw& law() const { return law_; }
     Regime regime() const { return regime_; }
@@ -70,6 +79,7 @@ private:
     double dissipated_ = 0.0;
     double last_force_ = 0.0;
     double last_bound_ = 0.0;
+    bool coupled_ = false;
 };
 
 }  // namespace plascap

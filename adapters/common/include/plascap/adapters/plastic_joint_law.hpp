@@ -1,6 +1,7 @@
 #pragma once
 // The joint-level law: six dof laws, the breaking rule, and the totals reports need. Engine
 // adapters call plan() before each step and settle() after it; nothing here knows an engine.
+// With a yield condition in the settings, the plastic dofs yield together on it (coupled_yield.hpp).
 #include <optional>
 
 #include "plascap/adapters/dof.hpp"
@@ -42,9 +43,13 @@ public:
 private:
     double accumulated(bool rotations) const;
 
+    PerDof<ElasticPlasticLaw*> plastic_laws();
+
     PlasticJointSettings settings_;
     PerDof<std::optional<ElasticPlasticLaw>> laws_;
     std::optional<double> broken_at_;
+    PerDof<double> last_loads_{};  // the loads (−forces on b) of the last step, for a coupled condition
+    YieldHint hint_;
 };
 
 }  // namespace plascap

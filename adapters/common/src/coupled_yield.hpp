@@ -1,0 +1,30 @@
+#pragma once
+// How a joint's plastic dofs share one yield condition U(loads) = 1 (docs/yield-surface.md, "The
+// joint scheme"). Sequential-impulse solvers bound every row separately, so:
+//   rigid-plastic rows: before each step, each row's bound is the component of the surface point on
+//     the ray of the last step's loads, b_i = |s_i|/U(s) — the rows saturate together exactly where
+//     the ray leaves the surface — but never less than what the dof could take alone with the others
+//     held, on the inscribed cross-polytope Σ|s_j|/C_j ≤ 1 (C_j the dof's own capacity): a dof the
+//     last load did not use keeps a share of its strength;
+//   elastic-plastic dofs: after each step, an explicit return mapping of the spring loads onto the
+//     surface by cutting planes (Ortiz & Simo, Int. J. Numer. Meth. Eng. 23, 1986), Δx_p = Δλ·∇U:
+//     associated flow, and the work load·Δx_p ≥ 0 (U is homogeneous: s·∇U = U > 0).
+#include <optional>
+
+#include "plascap/adapters/elastic_plastic_law.hpp"
+#include "plascap/adapters/yield_condition.hpp"
+
+namespace plascap::detail {
+
+// The Hold bounds of the rigid-plastic dofs for the next step; nothing for the others. `laws`
+// holds each plastic dof's law (nullptr for free and rigid dofs), loads the last step's six loads.
+PerDof<std::optional<double>> coupled_hold_bounds(const YieldCondition& condition, YieldHint& hint,
+                                                  const PerDof<double>& loads,
+                                                  const PerDof<ElasticPlasticLaw*>& laws);
+
+// Returns the elastic-plastic dofs' spring loads to the surface after a step (the others' loads
+// held at what they applied), moving their plastic offsets along the normal.
+void coupled_return_mapping(const YieldCondition& condition, YieldHint& hint, const PerDof<double>& positions,
+                            const PerDof<double>& applied_loads, const PerDof<ElasticPlasticLaw*>& laws);
+
+}  // namespace plascap::detail
