@@ -54,6 +54,9 @@ struct TwoBodies {
     double reduced_mass() const { return mass_a * mass_b / (mass_a + mass_b); }
 };
 
+// ½·m·v² + ½·ωᵀ·I·ω of a box body.
+double kinetic_energy(const SceneBody& body, const BodyState& state);
+
 Trace run(const std::string& engine, const HangingBlock& scene);
 Trace run(const std::string& engine, const TwoBodies& scene);
 Trace run(const std::string& engine, const Cantilever& scene);

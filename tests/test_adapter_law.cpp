@@ -11,6 +11,7 @@
 #include "plascap/adapters/joint_loads.hpp"
 #include "plascap/adapters/plastic_joint_law.hpp"
 #include "plascap/adapters/row_effective_mass.hpp"
+#include "plascap/adapters/yield_condition.hpp"
 
 namespace {
 
@@ -228,6 +229,88 @@ TEST(RowEffectiveMass, TwoMovingBodiesMatchTheClosedForm) {
     EXPECT_NEAR(m[index(Dof::Mx)], 1.0 / (1.0 + 0.25), 1e-15);
     // Against the world (a absent) only b counts.
     EXPECT_NEAR(row_effective_masses(axes, b, std::nullopt)[index(Dof::Qx)], 1.0 / (0.5 + 1.0 / 3), 1e-15);
+}
+
+}  // namespace
+
+namespace {
+
+// A coupled condition in closed form: a circle in (Mx, Mz) of radius C, U = √(Mx² + Mz²)/C, the
+// other loads ignored (what a round bar's bending surface is at N = 0).
+class CircleInMxMz final : public YieldCondition {
+public:
+    explicit CircleInMxMz(double c) : c_(c) {}
+    YieldEvaluation evaluate(const PerDof<double>& l, YieldHint&) const override {
+        const double mx = l[index(Dof::Mx)], mz = l[index(Dof::Mz)], r = std::hypot(mx, mz);
+        YieldEvaluation e;
+        e.utilisation = r / c_;
+        if (r > 0) e.gradient[index(Dof::Mx)] = mx / (r * c_), e.gradient[index(Dof::Mz)] = mz / (r * c_);
+        return e;
+    }
+    PerDof<double> axis_capacity(bool) const override { return {0, 0, 0, c_, 0, c_}; }
+
+private:
+    double c_;
+};
+
+PlasticJointSettings circle_joint(double c, std::optional<double> k) {
+    PlasticJointSettings s;
+    s.modes.fill(DofMode::Rigid);
+    s.modes[index(Dof::Mx)] = s.modes[index(Dof::Mz)] = DofMode::Plastic;
+    s.laws[index(Dof::Mx)] = s.laws[index(Dof::Mz)] = DofLaw{c, c, k};
+    s.yield_condition = std::make_shared<CircleInMxMz>(c);
+    return s;
+}
+
+PerDof<double> moments(double mx, double mz) {
+    PerDof<double> f{};
+    f[index(Dof::Mx)] = mx, f[index(Dof::Mz)] = mz;
+    return f;
+}
+
+// Rigid-plastic rows on the circle C = 10 N·m: a load (−6, −6) on b (section load (6, 6), U = 0.849)
+// gives each row the bound 6/0.849 = 7.07 = C/√2: the rows saturate together where the ray leaves
+// the circle (the box of independent limits would let both reach 10). A row the last load did not
+// use keeps C·(1 − Σ others/C): after (0, −6) the Mx row gets max(radial 0, 10·(1 − 0.6)) = 4,
+// the Mz row the radial 6/0.6 = 10.
+TEST(CoupledYield, RigidPlasticRowBoundsFollowTheSurfaceAlongTheLastLoad) {
+    PlasticJointLaw law(circle_joint(10.0, std::nullopt));
+    const PerDof<double> zero{}, masses{1, 1, 1, 1, 1, 1};
+    law.start(zero);
+    auto plan = law.plan(zero, 0.01, masses);
+    EXPECT_DOUBLE_EQ(plan[index(Dof::Mx)]->bound, 10.0);  // nothing known yet: the dof's own capacity
+    law.settle(zero, moments(-6, -6), 0.01);
+    plan = law.plan(zero, 0.01, masses);
+    EXPECT_NEAR(plan[index(Dof::Mx)]->bound, 10.0 / std::sqrt(2.0), 1e-12);
+    EXPECT_NEAR(plan[index(Dof::Mz)]->bound, 10.0 / std::sqrt(2.0), 1e-12);
+    law.settle(zero, moments(0, -6), 0.02);
+    plan = law.plan(zero, 0.01, masses);
+    EXPECT_NEAR(plan[index(Dof::Mx)]->bound, 4.0, 1e-12);
+    EXPECT_NEAR(plan[index(Dof::Mz)]->bound, 10.0, 1e-12);
+    // At the bound the rows flow, and their work is dissipated.
+    PerDof<double> moved = zero;
+    moved[index(Dof::Mz)] = 0.01;
+    law.settle(moved, moments(0, -10), 0.03);
+    EXPECT_NEAR(law.dissipated(), 10 * 0.01, 1e-15);
+}
+
+// Elastic-plastic, k = 1000 N·m/rad per dof, C = 10: a trial (12, 5) outside the circle returns to
+// it along the normal, (12, 5)·10/13, with Δθ_p = (13 − 10)/k along (12, 5)/13 (radial return is
+// exact for a circle with equal stiffnesses); the energy dissipated is the load times Δθ_p.
+TEST(CoupledYield, ElasticPlasticReturnMappingIsAssociated) {
+    PlasticJointLaw law(circle_joint(10.0, 1000.0));
+    const PerDof<double> zero{}, masses{1, 1, 1, 1, 1, 1};
+    law.start(zero);
+    law.plan(zero, 1e-3, masses);
+    PerDof<double> at{};
+    at[index(Dof::Mx)] = 0.012, at[index(Dof::Mz)] = 0.005;  // spring loads 12 and 5 N·m
+    law.settle(at, zero, 1e-3);
+    const double dp = 3.0 / 1000.0;
+    EXPECT_NEAR(law.law(Dof::Mx)->plastic_offset(), dp * 12 / 13, 1e-12);
+    EXPECT_NEAR(law.law(Dof::Mz)->plastic_offset(), dp * 5 / 13, 1e-12);
+    EXPECT_NEAR(law.dissipated(), 10.0 * dp, 1e-12);
+    const auto plan = law.plan(at, 1e-3, masses);
+    EXPECT_NEAR(std::hypot(plan[index(Dof::Mx)]->force, plan[index(Dof::Mz)]->force), 10.0, 1e-9);
 }
 
 }  // namespace

@@ -6,26 +6,22 @@
 namespace plascap::detail {
 namespace {
 
-double own_capacity(const ElasticPlasticLaw& law, double load) {
-    return load >= 0.0 ? law.law().capacity_positive : law.law().capacity_negative;
-}
-
 bool rigid_plastic(const ElasticPlasticLaw& law) { return law.regime() != Regime::ElasticPlastic; }
 
 }  // namespace
 
-PerDof<std::optional<double>> coupled_hold_bounds(const YieldCondition& condition, YieldHint& hint,
-                                                  const PerDof<double>& loads,
+PerDof<std::optional<double>> coupled_hold_bounds(const YieldCondition& condition, const AxisCapacities& axes,
+                                                  YieldHint& hint, const PerDof<double>& loads,
                                                   const PerDof<ElasticPlasticLaw*>& laws) {
     PerDof<std::optional<double>> bounds;
     const bool loaded = std::any_of(loads.begin(), loads.end(), [](double s) { return s != 0.0; });
     const double U = loaded ? condition.evaluate(loads, hint).utilisation : 0.0;
-    double share = 0.0;  // Σ |s_j|/C_j over the plastic dofs: the cross-polytope's gauge
+    double share = 0.0;  // Σ |s_j|/C_j over the dofs that carry load: the cross-polytope's gauge
     for (std::size_t j = 0; j < kDofCount; ++j)
-        if (laws[j]) share += std::abs(loads[j]) / own_capacity(*laws[j], loads[j]);
+        if (loads[j] != 0.0) share += std::abs(loads[j]) / axes.at(j, loads[j]);
     for (std::size_t i = 0; i < kDofCount; ++i) {
         if (!laws[i]) continue;
-        const double own = own_capacity(*laws[i], loads[i]);
+        const double own = axes.at(i, loads[i]);
         if (!loaded) {  // nothing known yet: the dof's own capacity (the smaller side before any load)
             bounds[i] = std::min(laws[i]->law().capacity_positive, laws[i]->law().capacity_negative);
             continue;

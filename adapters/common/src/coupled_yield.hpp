@@ -4,8 +4,9 @@
 //   rigid-plastic rows: before each step, each row's bound is the component of the surface point on
 //     the ray of the last step's loads, b_i = |s_i|/U(s) — the rows saturate together exactly where
 //     the ray leaves the surface — but never less than what the dof could take alone with the others
-//     held, on the inscribed cross-polytope Σ|s_j|/C_j ≤ 1 (C_j the dof's own capacity): a dof the
-//     last load did not use keeps a share of its strength;
+//     held, on the inscribed cross-polytope Σ|s_j|/C_j ≤ 1 (C_j where the surface meets dof j's
+//     axis, over all six dofs, rigid ones too): a dof the last load did not use keeps a share of
+//     its strength;
 //   elastic-plastic dofs: after each step, an explicit return mapping of the spring loads onto the
 //     surface by cutting planes (Ortiz & Simo, Int. J. Numer. Meth. Eng. 23, 1986), Δx_p = Δλ·∇U:
 //     associated flow, and the work load·Δx_p ≥ 0 (U is homogeneous: s·∇U = U > 0).
@@ -16,10 +17,17 @@
 
 namespace plascap::detail {
 
+// Where the condition meets each dof axis, both ways (YieldCondition::axis_capacity), kept by the
+// joint so that no step recomputes them.
+struct AxisCapacities {
+    PerDof<double> positive{}, negative{};
+    double at(std::size_t dof, double load) const { return load >= 0.0 ? positive[dof] : negative[dof]; }
+};
+
 // The Hold bounds of the rigid-plastic dofs for the next step; nothing for the others. `laws`
 // holds each plastic dof's law (nullptr for free and rigid dofs), loads the last step's six loads.
-PerDof<std::optional<double>> coupled_hold_bounds(const YieldCondition& condition, YieldHint& hint,
-                                                  const PerDof<double>& loads,
+PerDof<std::optional<double>> coupled_hold_bounds(const YieldCondition& condition, const AxisCapacities& axes,
+                                                  YieldHint& hint, const PerDof<double>& loads,
                                                   const PerDof<ElasticPlasticLaw*>& laws);
 
 // Returns the elastic-plastic dofs' spring loads to the surface after a step (the others' loads

@@ -11,6 +11,10 @@ PlasticJointLaw::PlasticJointLaw(const PlasticJointSettings& settings) : setting
         laws_[index(dof)].emplace(settings.laws[index(dof)]);
         if (settings.yield_condition) laws_[index(dof)]->couple();
     }
+    if (settings.yield_condition) {
+        axis_positive_ = settings.yield_condition->axis_capacity(true);
+        axis_negative_ = settings.yield_condition->axis_capacity(false);
+    }
 }
 
 PerDof<ElasticPlasticLaw*> PlasticJointLaw::plastic_laws() {
@@ -35,7 +39,8 @@ PerDof<std::optional<RowCommand>> PlasticJointLaw::plan(const PerDof<double>& po
     PerDof<std::optional<RowCommand>> commands;
     PerDof<std::optional<double>> bounds;
     if (settings_.yield_condition)
-        bounds = detail::coupled_hold_bounds(*settings_.yield_condition, hint_, last_loads_, plastic_laws());
+        bounds = detail::coupled_hold_bounds(*settings_.yield_condition, {axis_positive_, axis_negative_}, hint_,
+                                             last_loads_, plastic_laws());
     for (std::size_t i = 0; i < kDofCount; ++i) {
         if (laws_[i]) commands[i] = laws_[i]->plan(positions[i], dt, effective_masses[i], bounds[i]);
     }

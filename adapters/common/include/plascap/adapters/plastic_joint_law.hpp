@@ -50,6 +50,7 @@ private:
     std::optional<double> broken_at_;
     PerDof<double> last_loads_{};  // the loads (−forces on b) of the last step, for a coupled condition
     YieldHint hint_;
+    PerDof<double> axis_positive_{}, axis_negative_{};  // the condition's axis capacities
 };
 
 }  // namespace plascap
