@@ -10,6 +10,7 @@
 
 #include "plascap/adapters/bullet_plastic_joint.hpp"
 #include "plascap/adapters/bullet_world.hpp"
+#include "joint_yield_settings.hpp"
 
 namespace {
 
@@ -71,5 +72,25 @@ void PlasticJoints(benchmark::State& state) {
     for (auto& j : joints) j->detach(scene.world.world());
 }
 BENCHMARK(PlasticJoints)->Args({0, 1})->Args({1, 1})->Args({0, 0})->Args({1, 0})->Unit(benchmark::kMicrosecond);
+
+// Box against coupled yield (issue 14: coupled ≤ 1.1× box), all six dofs plastic on the square of
+// joint_yield_settings.hpp: state.range(0) = 1 coupled, range(1) = 1 elastic-plastic, range(2) the
+// load in % of the squash load (10: far inside, the exact U is never needed; 80: solved every step).
+void YieldSurfaces(benchmark::State& state) {
+    HangingBoxes scene(false);
+    const plascap::PlasticJointSettings settings = bench::joint_settings(
+        state.range(0) == 1 ? bench::Yield::Coupled : bench::Yield::Box, 10.0 * 9.81, state.range(2) / 100.0, state.range(1) == 1, true);
+    std::vector<std::unique_ptr<plascap::BulletPlasticJoint>> joints;
+    for (int i = 0; i < kJoints; ++i) {
+        joints.push_back(std::make_unique<plascap::BulletPlasticJoint>(nullptr, scene.boxes[i]->body(), scene.anchor(i), settings));
+        joints.back()->attach(scene.world.world(), kDt);
+    }
+    for (auto _ : state) scene.world.step(kDt);
+    for (auto& j : joints) j->detach(scene.world.world());
+}
+BENCHMARK(YieldSurfaces)
+    ->ArgNames({"coupled", "elastic", "load%"})
+    ->ArgsProduct({{0, 1}, {0, 1}, {10, 80}})
+    ->Unit(benchmark::kMicrosecond);
 
 }  // namespace

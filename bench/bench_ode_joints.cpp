@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "plascap/adapters/ode_plastic_joint.hpp"
+#include "joint_yield_settings.hpp"
 
 namespace {
 
@@ -77,5 +78,29 @@ void PlasticJoints(benchmark::State& state) {
     joints.clear();
 }
 BENCHMARK(PlasticJoints)->Args({0, 1})->Args({1, 1})->Args({0, 0})->Args({1, 0})->Unit(benchmark::kMicrosecond);
+
+// Box against coupled yield (issue 14: coupled ≤ 1.1× box), all six dofs plastic on the square of
+// joint_yield_settings.hpp: state.range(0) = 1 coupled, range(1) = 1 elastic-plastic, range(2) the
+// load in % of the squash load (10: far inside, the exact U is never needed; 80: solved every step).
+void YieldSurfaces(benchmark::State& state) {
+    HangingBoxes scene;
+    const plascap::PlasticJointSettings settings = bench::joint_settings(
+        state.range(0) == 1 ? bench::Yield::Coupled : bench::Yield::Box, 10.0 * 9.81, state.range(2) / 100.0, state.range(1) == 1, true);
+    std::vector<std::unique_ptr<plascap::OdePlasticJoint>> joints;
+    for (int i = 0; i < kJoints; ++i) {
+        joints.push_back(std::make_unique<plascap::OdePlasticJoint>(scene.world, nullptr, scene.boxes[i], scene.anchor(i), settings));
+        joints.back()->engage(0.0);
+    }
+    for (auto _ : state) {
+        for (auto& j : joints) j->before_step(kDt);
+        dWorldQuickStep(scene.world, kDt);
+        for (auto& j : joints) j->after_step(kDt);
+    }
+    joints.clear();
+}
+BENCHMARK(YieldSurfaces)
+    ->ArgNames({"coupled", "elastic", "load%"})
+    ->ArgsProduct({{0, 1}, {0, 1}, {10, 80}})
+    ->Unit(benchmark::kMicrosecond);
 
 }  // namespace

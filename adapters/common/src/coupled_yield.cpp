@@ -10,22 +10,41 @@ bool rigid_plastic(const ElasticPlasticLaw& law) { return law.regime() != Regime
 
 }  // namespace
 
+namespace {
+
+// Σ |s_j|/C_j over the dofs that carry load: the gauge of the cross-polytope spanned by the axis
+// capacities, which lies inside the convex surface, so U ≤ this share.
+double cross_polytope_share(const AxisCapacities& axes, const PerDof<double>& loads) {
+    double share = 0.0;
+    for (std::size_t j = 0; j < kDofCount; ++j)
+        if (loads[j] != 0.0) share += std::abs(loads[j]) / axes.at(j, loads[j]);
+    return share;
+}
+
+// Below this share the load is certainly well inside (U ≤ share), and the bounds need no exact U.
+constexpr double kFarInside = 0.5;
+
+}  // namespace
+
 PerDof<std::optional<double>> coupled_hold_bounds(const YieldCondition& condition, const AxisCapacities& axes,
                                                   YieldHint& hint, const PerDof<double>& loads,
                                                   const PerDof<ElasticPlasticLaw*>& laws) {
     PerDof<std::optional<double>> bounds;
+    // Springs take no bound (their last regime decides; a dof that turns stiff this step holds at its
+    // own capacity for that step).
+    if (std::none_of(laws.begin(), laws.end(), [](const ElasticPlasticLaw* l) { return l && rigid_plastic(*l); })) return bounds;
     const bool loaded = std::any_of(loads.begin(), loads.end(), [](double s) { return s != 0.0; });
-    const double U = loaded ? condition.evaluate(loads, hint).utilisation : 0.0;
-    double share = 0.0;  // Σ |s_j|/C_j over the dofs that carry load: the cross-polytope's gauge
-    for (std::size_t j = 0; j < kDofCount; ++j)
-        if (loads[j] != 0.0) share += std::abs(loads[j]) / axes.at(j, loads[j]);
+    const double share = cross_polytope_share(axes, loads);
+    // Far inside, the cross-polytope floors alone leave every row at least half its capacity above
+    // its load; the exact U is needed only nearer the surface.
+    const double U = loaded && share > kFarInside ? condition.evaluate(loads, hint).utilisation : 0.0;
     for (std::size_t i = 0; i < kDofCount; ++i) {
-        if (!laws[i]) continue;
-        const double own = axes.at(i, loads[i]);
+        if (!laws[i] || !rigid_plastic(*laws[i])) continue;
         if (!loaded) {  // nothing known yet: the dof's own capacity (the smaller side before any load)
             bounds[i] = std::min(laws[i]->law().capacity_positive, laws[i]->law().capacity_negative);
             continue;
         }
+        const double own = axes.at(i, loads[i]);
         const double radial = U > 0.0 && std::isfinite(U) ? std::abs(loads[i]) / U : 0.0;
         const double others = share - std::abs(loads[i]) / own;
         bounds[i] = std::max(radial, own * std::max(0.0, 1.0 - others));
@@ -33,8 +52,9 @@ PerDof<std::optional<double>> coupled_hold_bounds(const YieldCondition& conditio
     return bounds;
 }
 
-void coupled_return_mapping(const YieldCondition& condition, YieldHint& hint, const PerDof<double>& positions,
-                            const PerDof<double>& applied_loads, const PerDof<ElasticPlasticLaw*>& laws) {
+void coupled_return_mapping(const YieldCondition& condition, const AxisCapacities& axes, YieldHint& hint,
+                            const PerDof<double>& positions, const PerDof<double>& applied_loads,
+                            const PerDof<ElasticPlasticLaw*>& laws) {
     PerDof<double> s = applied_loads;
     PerDof<double> k{};
     bool any = false;
@@ -44,7 +64,7 @@ void coupled_return_mapping(const YieldCondition& condition, YieldHint& hint, co
         s[i] = k[i] * (positions[i] - laws[i]->plastic_offset());  // the spring's load, −f = k·(x − x_p)
         any = true;
     }
-    if (!any) return;
+    if (!any || cross_polytope_share(axes, s) <= 1.0) return;  // U ≤ share ≤ 1: inside, nothing to return
     PerDof<double> moved{};
     constexpr int kMaxCuts = 50;
     constexpr double kOnSurface = 1e-12;

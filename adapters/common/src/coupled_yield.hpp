@@ -10,6 +10,8 @@
 //   elastic-plastic dofs: after each step, an explicit return mapping of the spring loads onto the
 //     surface by cutting planes (Ortiz & Simo, Int. J. Numer. Meth. Eng. 23, 1986), Δx_p = Δλ·∇U:
 //     associated flow, and the work load·Δx_p ≥ 0 (U is homogeneous: s·∇U = U > 0).
+// The cross-polytope of the axis capacities lies inside the convex surface, so U ≤ Σ|s_j|/C_j:
+// below 1/2 (bounds) or 1 (return mapping) that sum answers without solving for U.
 #include <optional>
 
 #include "plascap/adapters/elastic_plastic_law.hpp"
@@ -32,7 +34,8 @@ PerDof<std::optional<double>> coupled_hold_bounds(const YieldCondition& conditio
 
 // Returns the elastic-plastic dofs' spring loads to the surface after a step (the others' loads
 // held at what they applied), moving their plastic offsets along the normal.
-void coupled_return_mapping(const YieldCondition& condition, YieldHint& hint, const PerDof<double>& positions,
-                            const PerDof<double>& applied_loads, const PerDof<ElasticPlasticLaw*>& laws);
+void coupled_return_mapping(const YieldCondition& condition, const AxisCapacities& axes, YieldHint& hint,
+                            const PerDof<double>& positions, const PerDof<double>& applied_loads,
+                            const PerDof<ElasticPlasticLaw*>& laws);
 
 }  // namespace plascap::detail

@@ -54,7 +54,8 @@ bool PlasticJointLaw::settle(const PerDof<double>& positions, const PerDof<doubl
         last_loads_[i] = -forces[i];
     }
     if (settings_.yield_condition)
-        detail::coupled_return_mapping(*settings_.yield_condition, hint_, positions, last_loads_, plastic_laws());
+        detail::coupled_return_mapping(*settings_.yield_condition, {axis_positive_, axis_negative_}, hint_, positions,
+                                       last_loads_, plastic_laws());
     if (plastic_displacement() > settings_.max_plastic_displacement ||
         plastic_rotation() > settings_.max_plastic_rotation) {
         broken_at_ = time;
