@@ -26,13 +26,6 @@ Vec3 rotate(const Mat& m, const Vec3& v) {
     return r;
 }
 
-Mat from_quaternion(const Quaternion& q) {
-    const double w = q[0], x = q[1], y = q[2], z = q[3];
-    return {{{1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)},
-             {2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)},
-             {2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)}}};
-}
-
 Scene one_body_one_joint(double dt, int steps, int iterations, double g, const Turn& turn, SceneBody body, Mat frame,
                          Dof plastic, const DofLaw& law) {
     const Mat r = rotation(turn);
@@ -84,19 +77,6 @@ Trace record(const std::string& engine_name, const Scene& scene, Dof dof, const 
 }
 
 }  // namespace
-
-// ½·m·v² + ½·ωᵀ·I·ω of a box, I from its edges and orientation.
-double kinetic_energy(const SceneBody& body, const BodyState& s) {
-    const double m = body.mass;
-    const auto& [a, b, c] = body.size;
-    const Vec3 principal = {m * (b * b + c * c) / 12, m * (a * a + c * c) / 12, m * (a * a + b * b) / 12};
-    const Mat r = from_quaternion(s.orientation);
-    const Vec3 w_body = {dot({r[0][0], r[1][0], r[2][0]}, s.angular_velocity), dot({r[0][1], r[1][1], r[2][1]}, s.angular_velocity),
-                         dot({r[0][2], r[1][2], r[2][2]}, s.angular_velocity)};
-    double rotational = 0.0;
-    for (int i = 0; i < 3; ++i) rotational += principal[i] * w_body[i] * w_body[i];
-    return 0.5 * m * dot(s.velocity, s.velocity) + 0.5 * rotational;
-}
 
 Trace run(const std::string& engine_name, const TwoBodies& t) {
     Scene s;

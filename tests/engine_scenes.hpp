@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "body_energy.hpp"
 #include "scene_engine.hpp"
 
 namespace plascap::test {
@@ -53,9 +54,6 @@ struct TwoBodies {
     int iterations = 20, steps = 2000;
     double reduced_mass() const { return mass_a * mass_b / (mass_a + mass_b); }
 };
-
-// ½·m·v² + ½·ωᵀ·I·ω of a box body.
-double kinetic_energy(const SceneBody& body, const BodyState& state);
 
 Trace run(const std::string& engine, const HangingBlock& scene);
 Trace run(const std::string& engine, const TwoBodies& scene);

@@ -12,6 +12,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "coupled_report.hpp"
 #include "report_scenes.hpp"
 #include "scene_engine.hpp"
 #include "tool_main.hpp"
@@ -269,13 +270,29 @@ void cross_engine(std::ostream& md, const std::string& scenes) {
 
 int main(int argc, char** argv) {
     CLI::App app{"adapter-report: an engine adapter against the analytic references"};
-    std::string engine = "bullet", scenes, markdown, csv, cross;
+    std::string engine = "bullet", scenes, markdown, csv, cross, coupled, plot_data;
     app.add_option("--engine", engine, "Engine to report on")->capture_default_str();
-    app.add_option("--scenes", scenes, "The example scene directory (examples/scenes)")->required();
+    app.add_option("--scenes", scenes, "The example scene directory (examples/scenes); not with --coupled");
     app.add_option("--markdown", markdown, "Write the engine's report here (with --csv)");
     app.add_option("--csv", csv, "Write every stability-map case here (with --markdown)");
     app.add_option("--cross-engine", cross, "Instead: run every example scene on every engine; write the table here");
+    app.add_option("--coupled", coupled, "Instead: the coupled yield scheme's onset and flow on every engine; write "
+                                         "the report here (docs/coupled-yield-report.md)");
+    app.add_option("--plot-data", plot_data, "With --coupled: the flow table as whitespace-separated columns, for gnuplot");
     return tool_main("adapter-report", app, argc, argv, [&] {
+        if (!coupled.empty()) {
+            std::ofstream out(coupled);
+            if (!out) throw InputError("cannot write " + coupled);
+            std::ofstream plot;
+            if (!plot_data.empty()) {
+                plot.open(plot_data);
+                if (!plot) throw InputError("cannot write " + plot_data);
+            }
+            report::coupled_report(out, plot_data.empty() ? nullptr : &plot);
+            return 0;
+        }
+        if (!plot_data.empty()) throw InputError("--plot-data goes with --coupled");
+        if (scenes.empty()) throw InputError("give --scenes DIR (the example scenes), or --coupled FILE");
         if (!cross.empty()) {
             std::ofstream out(cross);
             if (!out) throw InputError("cannot write " + cross);

@@ -81,6 +81,9 @@ InteractionCurves sample_interaction(const YieldSurface& surface, double N, std:
     c.n_mz = n_mz_curve(surface, samples);
     c.mx_mz_at = N;
     c.mx_mz = mx_mz_curve(surface, N, samples);
+    const auto axis = [&](SectionResultant d) { return 1.0 / surface.utilisation(d); };
+    c.box_positive = {axis({1, 0, 0}), axis({0, 1, 0}), axis({0, 0, 1})};
+    c.box_negative = {axis({-1, 0, 0}), axis({0, -1, 0}), axis({0, 0, -1})};
     return c;
 }
 
@@ -149,10 +152,15 @@ void add_interaction_json(nlohmann::ordered_json& out, const InteractionCurves& 
 namespace {
 
 // One diagram: a closed curve in (a, b), both axes through 0, the load's point if any.
+// The box of independent limits: a from −a_neg to a_pos, b from −b_neg to b_pos.
+struct Box {
+    double a_neg, a_pos, b_neg, b_pos;
+};
+
 void draw_diagram(std::ostream& svg, double x0, double y0, double size, const std::vector<std::pair<double, double>>& curve,
-                  std::optional<std::pair<double, double>> load, const std::string& a_name, const std::string& b_name,
-                  const std::string& title) {
-    double a_max = 0.0, b_max = 0.0;
+                  const Box& box, std::optional<std::pair<double, double>> load, const std::string& a_name,
+                  const std::string& b_name, const std::string& title) {
+    double a_max = std::max(box.a_neg, box.a_pos), b_max = std::max(box.b_neg, box.b_pos);
     for (const auto& [a, b] : curve) a_max = std::max(a_max, std::abs(a)), b_max = std::max(b_max, std::abs(b));
     if (load) a_max = std::max(a_max, std::abs(load->first)), b_max = std::max(b_max, std::abs(load->second));
     a_max = a_max > 0 ? 1.1 * a_max : 1.0, b_max = b_max > 0 ? 1.1 * b_max : 1.0;
@@ -175,6 +183,11 @@ void draw_diagram(std::ostream& svg, double x0, double y0, double size, const st
         svg << line;
     }
     svg << " Z\" fill=\"#dbe8f5\" fill-opacity=\"0.6\" stroke=\"#1f5fa8\" stroke-width=\"2\"/>\n";
+    std::snprintf(line, sizeof line,
+                  "<rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\" fill=\"none\" stroke=\"#e08000\" "
+                  "stroke-width=\"1.5\" stroke-dasharray=\"6,4\"/>\n",
+                  X(-box.b_neg), Y(box.a_pos), X(box.b_pos) - X(-box.b_neg), Y(-box.a_neg) - Y(box.a_pos));
+    svg << line;
     if (load) {
         std::snprintf(line, sizeof line,
                       "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"5\" fill=\"#d62728\" stroke=\"#000\" stroke-width=\"1\"/>\n",
@@ -194,13 +207,15 @@ SvgPanel interaction_panels(const InteractionCurves& c, const std::optional<Sect
     for (const auto& p : c.mx_mz) mm.push_back({p.Mz, p.Mx});
     std::optional<std::pair<double, double>> l1, l2, l3;
     if (load) l1 = {{load->N, load->Mx}}, l2 = {{load->N, load->Mz}}, l3 = {{load->Mz, load->Mx}};
-    draw_diagram(svg, kGap, 10, kSize, nmx, l1, "N [N]", "Mx [N*m]", "N-Mx (Mz = 0)");
-    draw_diagram(svg, 2 * kGap + kSize, 10, kSize, nmz, l2, "N [N]", "Mz [N*m]", "N-Mz (Mx = 0)");
+    const SectionResultant &p = c.box_positive, &n = c.box_negative;
+    draw_diagram(svg, kGap, 10, kSize, nmx, {n.N, p.N, n.Mx, p.Mx}, l1, "N [N]", "Mx [N*m]", "N-Mx (Mz = 0)");
+    draw_diagram(svg, 2 * kGap + kSize, 10, kSize, nmz, {n.N, p.N, n.Mz, p.Mz}, l2, "N [N]", "Mz [N*m]", "N-Mz (Mx = 0)");
     char title[80];
     std::snprintf(title, sizeof title, "Mx-Mz at N = %.4g N", c.mx_mz_at);
-    draw_diagram(svg, 3 * kGap + 2 * kSize, 10, kSize, mm, l3, "Mz [N*m]", "Mx [N*m]", title);
-    svg << "<text x=\"" << kGap << "\" y=\"" << kSize + 80 << "\" font-size=\"11\" fill=\"#555\">exact fully plastic surface "
-        << "(stress blocks over the polygons); red: the load's components in each plane</text>\n";
+    draw_diagram(svg, 3 * kGap + 2 * kSize, 10, kSize, mm, {n.Mz, p.Mz, n.Mx, p.Mx}, l3, "Mz [N*m]", "Mx [N*m]", title);
+    svg << "<text x=\"" << kGap << "\" y=\"" << kSize + 80 << "\" font-size=\"11\" fill=\"#555\">blue: exact fully plastic surface "
+        << "(stress blocks over the polygons); orange dashed: the paper's independent limits (the box); red: the load's "
+        << "components in each plane</text>\n";
     return {svg.str(), 3 * kSize + 4 * kGap, kSize + 95};
 }
 

@@ -27,6 +27,8 @@ LoadCheck check_load(const SectionYield& yield, const SectionLoads& load, Torsio
 struct InteractionCurves {
     std::vector<SectionResultant> n_mx, n_mz, mx_mz;
     double mx_mz_at = 0.0;  // N of the Mx–Mz cut [N]
+    // The paper's independent limits: where the surface meets each axis, both ways.
+    SectionResultant box_positive, box_negative;  // (N, Mx, Mz) and (N_neg, Mx_neg, Mz_neg), magnitudes
 };
 InteractionCurves sample_interaction(const YieldSurface& surface, double N, std::size_t samples);
 
