@@ -2,8 +2,11 @@
 // Target (cubature issue): all six capacities of a 1,000-vertex polygon in <= 20 µs.
 #include <benchmark/benchmark.h>
 
+#include <optional>
+
 #include "plascap/sections/capacities.hpp"
 #include "plascap/sections/shapes.hpp"
+#include "plascap/sections/yield_surface.hpp"
 
 namespace {
 
@@ -41,3 +44,20 @@ void Validation(benchmark::State& state) {
 BENCHMARK(Validation)->Arg(4)->Arg(1000)->Arg(100000);
 
 }  // namespace
+
+// The exact N–Mx–Mz utilisation of one skew load (docs/yield-surface.md): from scratch, and warm-
+// started from the normal of a nearby load as a joint does step after step.
+void Utilisation(benchmark::State& state) {
+    const plascap::YieldSurface surface(plascap::validate_section(polygon_section(static_cast<std::size_t>(state.range(0)))));
+    const plascap::SectionResultant load{2e6, 1e5, -5e4};
+    std::optional<plascap::SectionResultant> warm;
+    if (state.range(1) == 1) warm = surface.along({2.01e6, 1.001e5, -5.01e4}).normal;
+    int iterations = 0;
+    for (auto _ : state) {
+        const plascap::SurfaceHit hit = surface.along(load, warm);
+        iterations = hit.iterations;
+        benchmark::DoNotOptimize(hit.utilisation);
+    }
+    state.counters["newton_steps"] = iterations;
+}
+BENCHMARK(Utilisation)->ArgNames({"vertices", "warm"})->ArgsProduct({{4, 100, 1000}, {0, 1}})->Unit(benchmark::kMicrosecond);

@@ -128,7 +128,7 @@ SurfaceHit YieldSurface::Impl::ray(const Vec3d& p, const Vec3d& u, const std::op
                 G[a][b] = s;
             }
         const double trace = G[0][0] + G[1][1];
-        bool accepted = false;
+        bool accepted = false, converged = false;
         for (int tries = 0; tries < 60; ++tries) {
             const double a = G[0][0] + mu, d = G[1][1] + mu, b = G[0][1];
             const double det = a * d - b * b;
@@ -136,7 +136,13 @@ SurfaceHit YieldSurface::Impl::ray(const Vec3d& p, const Vec3d& u, const std::op
                 mu = std::max({2.0 * mu, 1e-3 * std::abs(trace), gnorm, 1e-12});
                 continue;
             }
-            const double trial_y[2] = {y[0] - (d * g[0] - b * g[1]) / det, y[1] - (a * g[1] - b * g[0]) / det};
+            const double step[2] = {-(d * g[0] - b * g[1]) / det, -(a * g[1] - b * g[0]) / det};
+            // Newton's predicted decrease, −g·step/2 at μ = 0: below round-off of φ, φ is as low as it gets.
+            if (mu == 0.0 && -(g[0] * step[0] + g[1] * step[1]) <= 1e-15 * std::abs(cur.phi)) {
+                converged = true;
+                break;
+            }
+            const double trial_y[2] = {y[0] + step[0], y[1] + step[1]};
             const Vec3d trial_nu = point_at(trial_y);
             const Eval trial = evaluate(trial_nu, p);
             if (trial.phi <= cur.phi) {
@@ -150,7 +156,7 @@ SurfaceHit YieldSurface::Impl::ray(const Vec3d& p, const Vec3d& u, const std::op
             }
             mu = std::max({4.0 * mu, 1e-6 * std::abs(trace), 1e-12});
         }
-        if (!accepted || unchanged >= 3) break;  // at round-off: nothing left to gain
+        if (converged || !accepted || unchanged >= 3) break;  // at round-off: nothing left to gain
         if (std::hypot(y[0], y[1]) > 1e12) break;  // running off: h → 0 along the plane
     }
     hit.utilisation = cur.phi;  // the ray's length, in units of |u|
