@@ -98,6 +98,25 @@ TEST(SceneJson, JointFromAShapeName) {
     EXPECT_NE(error_of(scene_with(R"("shape": "HEB 200")")).find("a shape needs a \"material\""), std::string::npos);
 }
 
+// Section joints yield on the coupled surface unless told "box"; their torsion capacity is the
+// sand heap's T_p = τy·b²(3h − b)/6 (b ≤ h; S355 is von Mises, τy = fy/√3), eq. 2.14 with "paper".
+TEST(SceneJson, SectionJointsYieldOnTheCoupledSurfaceWithTorsionTp) {
+    const std::string rect = R"("section": {"parts": [{"outer": [[-0.02, -0.01], [0.02, -0.01], [0.02, 0.01], [-0.02, 0.01]]}]}, "material": "S355")";
+    const Scene coupled = parse_scene_json(scene_with(rect));
+    EXPECT_NE(coupled.joints[0].settings.yield_condition, nullptr);
+    const double tp = 355e6 / std::sqrt(3.0) * 0.02 * 0.02 * (3 * 0.04 - 0.02) / 6;
+    EXPECT_NEAR(coupled.joints[0].settings.laws[index(Dof::My)].capacity_positive, tp, 1e-4 * tp);
+    const Scene box = parse_scene_json(scene_with(rect + R"(, "yield_surface": "box")"));
+    EXPECT_EQ(box.joints[0].settings.yield_condition, nullptr);
+    EXPECT_NEAR(box.joints[0].settings.laws[index(Dof::My)].capacity_positive, tp, 1e-4 * tp);
+    const Scene paper = parse_scene_json(scene_with(rect + R"(, "yield_surface": "box", "torsion": "paper")"));
+    // Eq. 2.14: τy·∫∫d dA, over [−a, a] × [−c, c]: (2/3)·[2acr + a³·ln((c + r)/a) + c³·ln((a + r)/c)].
+    const double a = 0.02, c = 0.01, r = std::hypot(a, c);
+    const double paper_my = 355e6 / std::sqrt(3.0) * 2.0 / 3.0 * (2 * a * c * r + a * a * a * std::log((c + r) / a) + c * c * c * std::log((a + r) / c));
+    EXPECT_NEAR(paper.joints[0].settings.laws[index(Dof::My)].capacity_positive, paper_my, 1e-9 * paper_my);
+    EXPECT_EQ(parse_scene_json(scene_with(R"("capacities": {"N": 1})")).joints[0].settings.yield_condition, nullptr);
+}
+
 TEST_P(BadScenes, AreRefusedWithAMessageNamingTheProblem) {
     EXPECT_NE(error_of(GetParam().text).find(GetParam().message), std::string::npos)
         << GetParam().what << ": " << error_of(GetParam().text);
@@ -111,6 +130,14 @@ INSTANTIATE_TEST_SUITE_P(
             "joints": [{"name": "j", "a": "world", "b": "c", "anchor": [0,0,0], "axis": [0,1,0], "capacities": {"N": 1}}]})",
                  "joints[0] (\"j\").b: no body named \"c\""},
         BadScene{"zero axis", scene_with(R"("capacities": {"N": 1}, "axis": [0, 0, 0])"), "zero length"},
+        BadScene{"coupled without a section", scene_with(R"("capacities": {"N": 1}, "yield_surface": "coupled")"),
+                 "joints[0] (\"j\").yield_surface: \"coupled\" needs the section"},
+        BadScene{"unknown yield surface", scene_with(R"("shape": "IPE 200", "material": "S355", "yield_surface": "ellipse")"),
+                 "yield_surface: unknown \"ellipse\" (available: coupled, box)"},
+        BadScene{"torsion with capacities", scene_with(R"("capacities": {"N": 1}, "torsion": "paper")"),
+                 "torsion: chooses a section's torsion capacity"},
+        BadScene{"unknown torsion", scene_with(R"("shape": "IPE 200", "material": "S355", "torsion": "elastic")"),
+                 "unknown torsion capacity \"elastic\" (available: fully-plastic, paper)"},
         BadScene{"parallel x_axis", scene_with(R"("capacities": {"N": 1}, "x_axis": [0, 3, 0])"), "parallel to axis"},
         BadScene{"negative mass", scene_with(R"("capacities": {"N": 1})", R"("mass": -1)"), "bodies[0] (\"block\").mass: must be positive"},
         BadScene{"mass and density", scene_with(R"("capacities": {"N": 1})", R"("mass": 1, "density": 2)"), "exactly one of \"mass\" and \"density\""},
