@@ -53,6 +53,21 @@ void FixedJoints(benchmark::State& state) {
 }
 BENCHMARK(FixedJoints)->Unit(benchmark::kMicrosecond);
 
+// One plastic joint per box with `settings`; times the steps, the adapter's before_step and after_step included.
+void step_with_joints(benchmark::State& state, HangingBoxes& scene, const plascap::PlasticJointSettings& settings) {
+    std::vector<std::unique_ptr<plascap::OdePlasticJoint>> joints;
+    for (int i = 0; i < kJoints; ++i) {
+        joints.push_back(std::make_unique<plascap::OdePlasticJoint>(scene.world, nullptr, scene.boxes[i], scene.anchor(i), settings));
+        joints.back()->engage(0.0);
+    }
+    for (auto _ : state) {
+        for (auto& j : joints) j->before_step(kDt);
+        dWorldQuickStep(scene.world, kDt);
+        for (auto& j : joints) j->after_step(kDt);
+    }
+    joints.clear();
+}
+
 // Capacities well above the load; state.range(0) = 1 gives every plastic dof a stiffness (explicit
 // spring rows); state.range(1) = 1: all six dofs plastic, 0: translations rigid (a plastic hinge).
 // Includes the adapter's before_step and after_step.
@@ -65,42 +80,15 @@ void PlasticJoints(benchmark::State& state) {
         settings.laws[plascap::index(dof)] = plascap::DofLaw{1e5, 1e5, std::nullopt};
         if (state.range(0) == 1) settings.laws[plascap::index(dof)].stiffness = 100.0;
     }
-    std::vector<std::unique_ptr<plascap::OdePlasticJoint>> joints;
-    for (int i = 0; i < kJoints; ++i) {
-        joints.push_back(std::make_unique<plascap::OdePlasticJoint>(scene.world, nullptr, scene.boxes[i], scene.anchor(i), settings));
-        joints.back()->engage(0.0);
-    }
-    for (auto _ : state) {
-        for (auto& j : joints) j->before_step(kDt);
-        dWorldQuickStep(scene.world, kDt);
-        for (auto& j : joints) j->after_step(kDt);
-    }
-    joints.clear();
+    step_with_joints(state, scene, settings);
 }
 BENCHMARK(PlasticJoints)->Args({0, 1})->Args({1, 1})->Args({0, 0})->Args({1, 0})->Unit(benchmark::kMicrosecond);
 
-// Box against coupled yield (issue 14: coupled ≤ 1.1× box), all six dofs plastic on the square of
-// joint_yield_settings.hpp: state.range(0) = 1 coupled, range(1) = 1 elastic-plastic, range(2) the
-// load in % of the squash load (10: far inside, the exact U is never needed; 80: solved every step).
+// Box against coupled yield: the cases of joint_yield_settings.hpp.
 void YieldSurfaces(benchmark::State& state) {
     HangingBoxes scene;
-    const plascap::PlasticJointSettings settings = bench::joint_settings(
-        state.range(0) == 1 ? bench::Yield::Coupled : bench::Yield::Box, 10.0 * 9.81, state.range(2) / 100.0, state.range(1) == 1, true);
-    std::vector<std::unique_ptr<plascap::OdePlasticJoint>> joints;
-    for (int i = 0; i < kJoints; ++i) {
-        joints.push_back(std::make_unique<plascap::OdePlasticJoint>(scene.world, nullptr, scene.boxes[i], scene.anchor(i), settings));
-        joints.back()->engage(0.0);
-    }
-    for (auto _ : state) {
-        for (auto& j : joints) j->before_step(kDt);
-        dWorldQuickStep(scene.world, kDt);
-        for (auto& j : joints) j->after_step(kDt);
-    }
-    joints.clear();
+    step_with_joints(state, scene, bench::yield_surface_settings(state));
 }
-BENCHMARK(YieldSurfaces)
-    ->ArgNames({"coupled", "elastic", "load%"})
-    ->ArgsProduct({{0, 1}, {0, 1}, {10, 80}})
-    ->Unit(benchmark::kMicrosecond);
+BENCHMARK(YieldSurfaces)->Apply(bench::yield_surface_cases);
 
 }  // namespace

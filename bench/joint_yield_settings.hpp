@@ -2,6 +2,8 @@
 // The joint settings the engine benchmarks compare: the paper's box of independent limits and the
 // coupled surface (docs/yield-surface.md), lightly loaded or near the surface. The section is a
 // 0.1 × 0.1 m square whose squash load is the hanging box's weight over `load_share`.
+#include <benchmark/benchmark.h>
+
 #include <memory>
 
 #include "plascap/adapters/plastic_joint_settings.hpp"
@@ -28,6 +30,18 @@ inline plascap::PlasticJointSettings joint_settings(Yield yield, double weight, 
     }
     if (yield == Yield::Coupled) s.yield_condition = condition;
     return s;
+}
+
+// The YieldSurfaces cases (issue 14: coupled ≤ 1.1× box), all six dofs plastic on the square above:
+// state.range(0) = 1 coupled, range(1) = 1 elastic-plastic, range(2) the load in % of the squash
+// load (10: far inside, the exact U is never needed; 80: solved every step). 10 kg boxes.
+inline plascap::PlasticJointSettings yield_surface_settings(const benchmark::State& state) {
+    return joint_settings(state.range(0) == 1 ? Yield::Coupled : Yield::Box, 10.0 * 9.81, state.range(2) / 100.0,
+                          state.range(1) == 1, true);
+}
+
+inline void yield_surface_cases(benchmark::internal::Benchmark* b) {
+    b->ArgNames({"coupled", "elastic", "load%"})->ArgsProduct({{0, 1}, {0, 1}, {10, 80}})->Unit(benchmark::kMicrosecond);
 }
 
 }  // namespace bench

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "coupled_scenes.hpp"
+#include "engine_test_names.hpp"
 
 namespace plascap::test {
 namespace {
@@ -63,12 +64,7 @@ TEST_P(CoupledJoint, EnergyBalances) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(PlasticJoints, CoupledJoint, ::testing::ValuesIn(available_engines()),
-                         [](const ::testing::TestParamInfo<std::string>& info) {
-                             std::string name = info.param;
-                             std::replace(name.begin(), name.end(), '-', '_');
-                             return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(PlasticJoints, CoupledJoint, ::testing::ValuesIn(available_engines()), engine_test_name);
 
 }  // namespace
 }  // namespace plascap::test

@@ -10,6 +10,7 @@
 #include <cstdio>
 
 #include "engine_scenes.hpp"
+#include "engine_test_names.hpp"
 
 namespace plascap::test {
 namespace {
@@ -274,12 +275,7 @@ TEST_P(Engine, TwoMovingBodiesRigidPlasticStopAtTheCompressionCapacity) {
     EXPECT_LT(std::abs(trace.position.back() - trace.position[trace.position.size() - 100]), 1e-6);
 }
 
-INSTANTIATE_TEST_SUITE_P(PlasticJoints, Engine, ::testing::ValuesIn(available_engines()),
-                         [](const ::testing::TestParamInfo<std::string>& info) {
-                             std::string name = info.param;
-                             std::replace(name.begin(), name.end(), '-', '_');
-                             return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(PlasticJoints, Engine, ::testing::ValuesIn(available_engines()), engine_test_name);
 
 }  // namespace
 }  // namespace plascap::test

@@ -30,6 +30,15 @@ double measured_onset(const std::string& engine, const Case& c, double onset, do
     return 0.5 * (lo + hi);
 }
 
+// A table header: the given first columns, then one per engine.
+void header(std::ostream& md, const std::string& first_columns, int first_count, const std::vector<std::string>& engines) {
+    md << "| " << first_columns << " |";
+    for (const std::string& e : engines) md << ' ' << e << " |";
+    md << "\n|";
+    for (std::size_t i = 0; i < engines.size() + static_cast<std::size_t>(first_count); ++i) md << "---|";
+    md << '\n';
+}
+
 std::string fixed(double v, int digits) {
     char text[40];
     std::snprintf(text, sizeof text, "%.*f", digits, v);
@@ -47,11 +56,8 @@ void coupled_report(std::ostream& md, std::ostream* plot) {
        << "rigid-plastic, 50 iterations). The exact onset is the block mass at which the static load reaches U = 1 on the "
        << "section's condition (docs/yield-surface.md).\n\n"
        << "## Onset of flow\n\nThe load factor (mass / exact onset mass) at which the joint starts to flow (more than "
-       << "1e-4 m or rad over 1.5 s), found by bisection to 1e-4; dt = 1/240 s.\n\n| case | exact onset [kg] |";
-    for (const std::string& e : engines) md << ' ' << e << " |";
-    md << "\n|---|---|";
-    for (std::size_t i = 0; i < engines.size(); ++i) md << "---|";
-    md << '\n';
+       << "1e-4 m or rad over 1.5 s), found by bisection to 1e-4; dt = 1/240 s.\n\n";
+    header(md, "case | exact onset [kg]", 2, engines);
     for (const Case& c : cases) {
         const double onset = coupled::onset_mass(c);
         md << "| " << c.name << " | " << fixed(onset, 4) << " |";
@@ -64,12 +70,8 @@ void coupled_report(std::ostream& md, std::ostream* plot) {
     md << "\n## Where the joint flows, against the time step\n\nAt 1.2 × the exact onset the block falls; over the steps "
        << "in which the joint flows, the utilisation U of the loads it applied (1 = on the surface; below 1 = flowing early, "
        << "above = the rows let the load past the surface). Min / mean / max over the flowing steps of 1 s; plotted in "
-       << "coupled-yield-error.svg.\n\n"
-       << "| case | dt [s] |";
-    for (const std::string& e : engines) md << ' ' << e << " |";
-    md << "\n|---|---|";
-    for (std::size_t i = 0; i < engines.size(); ++i) md << "---|";
-    md << '\n';
+       << "coupled-yield-error.svg.\n\n";
+    header(md, "case | dt [s]", 2, engines);
     for (const Case& c : {cases[0], cases[1]}) {
         const double onset = coupled::onset_mass(c);
         for (int hz : {60, 120, 240, 480, 960}) {
