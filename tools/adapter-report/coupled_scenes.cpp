@@ -11,7 +11,6 @@
 
 namespace plascap::coupled {
 
-
 std::string scene_json(const Case& c, double mass, const std::string& extra_joint_keys, double duration, double dt) {
     char body[300];
     std::snprintf(body, sizeof body, R"({"name": "block", "box": [1, 1, 1], "mass": %.17g, "position": [%.17g, %.17g, %.17g]})",
@@ -35,6 +34,8 @@ double onset_mass(const Case& c) {
     return 1.0 / condition->evaluate(c.load_per_kg, hint).utilisation;
 }
 
+namespace {
+
 // A b × h rectangle centred on the joint point (b along the section's x, h along z).
 std::string rectangle_json(double b, double h) {
     char text[200];
@@ -49,6 +50,8 @@ Section rectangle_with(double b, double h, double fy) {
     s.parts[0].material.nu = 0.3;
     return s;
 }
+
+}  // namespace
 
 // Axial force and bending: the block hangs under the anchor, its centre 0.075 m aside, so gravity
 // gives N = m·g (tension) and Mz = m·g·0.075 m; a 0.2 × 0.1 m rectangle with fy = 1e5 Pa has
