@@ -1,5 +1,5 @@
 # Install rules and the exported CMake package: find_package(plascap) gives plascap::sections,
-# plascap::materials, plascap::common, plascap::adapters_common, and plascap::bullet and plascap::ode
+# plascap::materials, plascap::common, plascap::adapters_common, plascap::section_joints, and plascap::bullet and plascap::ode
 # when those adapters were built (test with if(TARGET plascap::bullet)).
 include(CMakePackageConfigHelpers)
 

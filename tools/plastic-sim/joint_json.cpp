@@ -6,13 +6,9 @@
 #include "plascap/input_error.hpp"
 #include "plascap/json_message.hpp"
 #include "plascap/materials/material_json.hpp"
-#include "plascap/adapters/section_yield_condition.hpp"
+#include "plascap/adapters/section_joint_settings.hpp"
 #include "plascap/sections/capacities.hpp"
-#include "plascap/sections/plastic_torsion.hpp"
-#include "plascap/sections/elastic_properties.hpp"
-#include "plascap/sections/joint_stiffness.hpp"
 #include "plascap/sections/section_json.hpp"
-#include "plascap/sections/torsion_constant.hpp"
 #include "plascap/sections/valid_section.hpp"
 #include "scene_json_values.hpp"
 
@@ -109,97 +105,40 @@ PerDof<std::optional<double>> given_stiffness(const Json& j, const std::string& 
     return k;
 }
 
-// EA/L, 12EI/L³, EI/L, GJ/L of the section's beam segment (joint_stiffness.hpp).
-PerDof<std::optional<double>> beam_stiffness(const ValidSection& section, double length, const std::string& where) {
-    const ElasticProperties elastic = elastic_properties(section);
-    if (!elastic.stiffness) throw InputError(where + ": the stiffness needs E for every material of the section");
-    const TorsionConstant torsion = saint_venant_torsion(section);
-    const JointStiffness s = joint_stiffness(*elastic.stiffness, torsion.GJ, length);
-    return {s.shear_x, s.axial, s.shear_z, s.bending_x, s.torsion, s.bending_z};
-}
-
-struct Strength {
-    Capacities capacities;
-    PerDof<std::optional<double>> stiffness;
-    std::optional<double> length;
-    std::shared_ptr<const YieldCondition> yield_condition;  // "yield_surface": "coupled"
-};
-
-// "yield_surface" (coupled | box) and "torsion" (fully-plastic | paper) of a section joint.
-struct YieldChoice {
-    bool coupled = true;
-    TorsionCapacity torsion = TorsionCapacity::FullyPlastic;
-};
-
-YieldChoice yield_choice(const Json& j, const std::string& where, bool from_section) {
-    YieldChoice c;
+// "yield_surface" (coupled | box) and "torsion" (fully-plastic | paper): checked for every joint,
+// meaningful for section joints only.
+void read_yield_choice(const Json& j, const std::string& where, bool from_section, SectionJointOptions& o) {
+    o.coupled = from_section;
     if (j.contains("yield_surface")) {
         const std::string name = text(j["yield_surface"], where + ".yield_surface");
         if (name != "coupled" && name != "box")
             throw InputError(where + ".yield_surface: unknown \"" + name + "\" (available: coupled, box)");
-        c.coupled = name == "coupled";
-        if (c.coupled && !from_section)
+        o.coupled = name == "coupled";
+        if (o.coupled && !from_section)
             throw InputError(where + ".yield_surface: \"coupled\" needs the section (\"section\" or \"shape\"), not \"capacities\"");
     }
     if (j.contains("torsion")) {
         if (!from_section) throw InputError(where + ".torsion: chooses a section's torsion capacity; \"capacities\" give My directly");
-        c.torsion = torsion_capacity_from_name(text(j["torsion"], where + ".torsion"), where + ".torsion");
+        o.torsion = torsion_capacity_from_name(text(j["torsion"], where + ".torsion"), where + ".torsion");
     }
-    if (!from_section) c.coupled = false;
-    return c;
 }
 
-// The section's coupled condition, and the box capacities that go with the choice: My the
-// torsion capacity chosen; with the coupled surface, N, Mx, Mz where it meets each axis.
-void apply_yield_choice(const ValidSection& valid, const YieldChoice& choice, bool needs_torsion, Strength& s) {
-    if (choice.torsion == TorsionCapacity::FullyPlastic && (needs_torsion || choice.coupled))
-        s.capacities.My = plastic_torsion(valid).T;
-    if (!choice.coupled) return;
-    s.yield_condition = section_yield_condition(SectionYield(YieldSurface(valid), {*s.capacities.Qx, *s.capacities.Qz, *s.capacities.My}));
-    const PerDof<double> up = s.yield_condition->axis_capacity(true), down = s.yield_condition->axis_capacity(false);
-    s.capacities.N = up[index(Dof::N)], s.capacities.N_neg = down[index(Dof::N)];
-    s.capacities.Mx = up[index(Dof::Mx)], s.capacities.Mx_neg = down[index(Dof::Mx)];
-    s.capacities.Mz = up[index(Dof::Mz)], s.capacities.Mz_neg = down[index(Dof::Mz)];
+// "section" or "shape" (short for "section": {"shape": ...}, docs/shapes.md), with the joint's
+// material where the section names none.
+ValidSection joint_section(const Json& j, const std::string& where, const MaterialCatalogue& catalogue) {
+    const std::string key = j.contains("shape") ? "shape" : "section";
+    Json section = key == "shape" ? Json{{"shape", j["shape"]}} : j["section"];
+    require_object(section, where + "." + key);
+    if (!section.contains("material") && j.contains("material")) section["material"] = j["material"];
+    return located(where + "." + key, [&] { return validate_section(parse_section_json(section.dump(), catalogue)); });
 }
 
-bool my_is_plastic(const Json& j) {
-    if (!j.contains("dofs") || !j["dofs"].is_object() || !j["dofs"].contains("My")) return true;  // default: plastic
-    return j["dofs"]["My"].is_string() && j["dofs"]["My"].get<std::string>() == "plastic";
-}
-
-Strength joint_strength(const Json& j, const std::string& where, const MaterialCatalogue& catalogue) {
-    if (int(j.contains("capacities")) + int(j.contains("section")) + int(j.contains("shape")) != 1) {
-        throw InputError(where + ": give exactly one of \"capacities\", \"section\" and \"shape\"");
-    }
-    if (j.contains("stiffness") && j.contains("length")) {
-        throw InputError(where + ": give at most one of \"stiffness\" and \"length\"");
-    }
-    Strength s;
-    if (j.contains("length")) s.length = positive_number(j["length"], where + ".length");
-    if (j.contains("capacities")) {
-        s.capacities = given_capacities(j["capacities"], where + ".capacities");
-        yield_choice(j, where, false);
-        if (s.length) throw InputError(where + ".length: a stiffness from a length needs a \"section\" or \"shape\"");
-    } else {
-        // "shape": "HEB 200" is short for "section": {"shape": "HEB 200"} (docs/shapes.md).
-        const std::string key = j.contains("shape") ? "shape" : "section";
-        Json section = key == "shape" ? Json{{"shape", j["shape"]}} : j["section"];
-        require_object(section, where + "." + key);
-        if (!section.contains("material") && j.contains("material")) section["material"] = j["material"];
-        const ValidSection valid = located(where + "." + key, [&] {
-            return validate_section(parse_section_json(section.dump(), catalogue));
-        });
-        s.capacities = compute_capacities(valid);
-        apply_yield_choice(valid, yield_choice(j, where, true), my_is_plastic(j), s);
-        if (s.length) s.stiffness = located(where + ".length", [&] { return beam_stiffness(valid, *s.length, where); });
-    }
-    if (j.contains("stiffness")) s.stiffness = given_stiffness(j["stiffness"], where + ".stiffness");
-    return s;
-}
-
-PerDof<DofMode> dof_modes(const Json& j, const std::string& where, const Capacities& capacities) {
+// Plastic where a capacity is known (every dof of a section: `capacities` nullptr), else rigid,
+// unless "dofs" says otherwise.
+PerDof<DofMode> dof_modes(const Json& j, const std::string& where, const Capacities* capacities) {
     PerDof<DofMode> modes{};
-    for (Dof dof : kAllDofs) modes[index(dof)] = has_capacity(capacities, dof) ? DofMode::Plastic : DofMode::Rigid;
+    for (Dof dof : kAllDofs)
+        modes[index(dof)] = !capacities || has_capacity(*capacities, dof) ? DofMode::Plastic : DofMode::Rigid;
     if (!j.contains("dofs")) return modes;
     const Json& dofs = j["dofs"];
     require_object(dofs, where + ".dofs");
@@ -207,25 +146,16 @@ PerDof<DofMode> dof_modes(const Json& j, const std::string& where, const Capacit
         const std::string at = where + ".dofs." + item.key();
         const Dof dof = dof_from_name(item.key(), where + ".dofs");
         modes[index(dof)] = dof_mode_from_name(text(item.value(), at), at);
-        if (modes[index(dof)] == DofMode::Plastic && !has_capacity(capacities, dof)) {
+        if (modes[index(dof)] == DofMode::Plastic && capacities && !has_capacity(*capacities, dof)) {
             throw InputError(at + ": a plastic dof needs its capacity");
         }
     }
     return modes;
 }
 
-void breaking_limits(const Json& j, const std::string& where, const std::optional<Material>& material,
-                     const std::optional<double>& length, PlasticJointSettings& settings) {
-    if (material && material->ultimate_strain && length) {
-        settings.max_plastic_displacement = *material->ultimate_strain * *length;  // ε_u·L
-    }
+// A "capacities" joint breaks at its material's max_plastic_rotation (no length: no displacement limit).
+void breaking_limits(const std::optional<Material>& material, PlasticJointSettings& settings) {
     if (material && material->max_plastic_rotation) settings.max_plastic_rotation = *material->max_plastic_rotation;
-    if (j.contains("max_plastic_displacement")) {
-        settings.max_plastic_displacement = positive_number(j["max_plastic_displacement"], where + ".max_plastic_displacement");
-    }
-    if (j.contains("max_plastic_rotation")) {
-        settings.max_plastic_rotation = positive_number(j["max_plastic_rotation"], where + ".max_plastic_rotation");
-    }
 }
 
 }  // namespace
@@ -255,17 +185,43 @@ SceneJoint parse_joint(const Json& j, const std::string& where_in, const std::ve
     }
 
     const std::optional<Material> material = joint_material(j, where, catalogue);
-    const Strength strength = joint_strength(j, where, catalogue);
-    joint.settings.modes = dof_modes(j, where, strength.capacities);
-    for (Dof dof : kAllDofs) {
-        if (joint.settings.modes[index(dof)] != DofMode::Plastic) continue;
-        DofLaw law = located(where + ", dof " + dof_name(dof),
-                             [&] { return dof_law_from_section(dof, strength.capacities); });
-        law.stiffness = strength.stiffness[index(dof)];
-        joint.settings.laws[index(dof)] = law;
+    if (int(j.contains("capacities")) + int(j.contains("section")) + int(j.contains("shape")) != 1) {
+        throw InputError(where + ": give exactly one of \"capacities\", \"section\" and \"shape\"");
     }
-    joint.settings.yield_condition = strength.yield_condition;
-    breaking_limits(j, where, material, strength.length, joint.settings);
+    if (j.contains("stiffness") && j.contains("length")) {
+        throw InputError(where + ": give at most one of \"stiffness\" and \"length\"");
+    }
+    const bool from_section = !j.contains("capacities");
+    SectionJointOptions options;
+    read_yield_choice(j, where, from_section, options);
+    if (j.contains("length")) {
+        if (!from_section) throw InputError(where + ".length: a stiffness from a length needs a \"section\" or \"shape\"");
+        options.segment_length = positive_number(j["length"], where + ".length");
+    }
+    if (from_section) {
+        const ValidSection section = joint_section(j, where, catalogue);
+        options.modes = dof_modes(j, where, nullptr);
+        joint.settings = located(where, [&] { return section_joint_settings(section, options); });
+    } else {
+        const Capacities capacities = given_capacities(j["capacities"], where + ".capacities");
+        joint.settings.modes = dof_modes(j, where, &capacities);
+        for (Dof dof : kAllDofs) {
+            if (joint.settings.modes[index(dof)] != DofMode::Plastic) continue;
+            joint.settings.laws[index(dof)] =
+                located(where + ", dof " + dof_name(dof), [&] { return dof_law_from_section(dof, capacities); });
+        }
+        breaking_limits(material, joint.settings);
+    }
+    if (j.contains("stiffness")) {
+        const PerDof<std::optional<double>> k = given_stiffness(j["stiffness"], where + ".stiffness");
+        for (Dof dof : kAllDofs) joint.settings.laws[index(dof)].stiffness = k[index(dof)];
+    }
+    if (j.contains("max_plastic_displacement")) {
+        joint.settings.max_plastic_displacement = positive_number(j["max_plastic_displacement"], where + ".max_plastic_displacement");
+    }
+    if (j.contains("max_plastic_rotation")) {
+        joint.settings.max_plastic_rotation = positive_number(j["max_plastic_rotation"], where + ".max_plastic_rotation");
+    }
     validate_joint_settings(joint.settings, where);
     return joint;
 }

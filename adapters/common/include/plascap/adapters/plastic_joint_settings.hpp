@@ -9,7 +9,6 @@
 #include "plascap/adapters/dof.hpp"
 #include "plascap/adapters/elastic_plastic_law.hpp"
 #include "plascap/adapters/yield_condition.hpp"
-#include "plascap/sections/capacities.hpp"
 
 namespace plascap {
 
@@ -29,11 +28,5 @@ struct PlasticJointSettings {
 // Throws InputError naming `where` and the dof for a bad law of a plastic dof or a non-positive limit.
 void validate_joint_settings(const PlasticJointSettings& settings, const std::string& where);
 
-// The capacity of each dof from a section's capacities (both signs; see capacities.hpp for which
-// rotation puts which side in tension): Qx, Qz, My act alike both ways; N resists positive motion
-// (elongation when the joint's y axis points from a to b) with N and negative with N_neg; Mx and Mz
-// with Mx, Mz one way and Mx_neg, Mz_neg the other. No stiffness: the law is rigid-plastic until one
-// is set. Throws InputError if a capacity the dof needs is missing or zero.
-DofLaw dof_law_from_section(Dof dof, const Capacities& capacities);
 
 }  // namespace plascap
