@@ -268,11 +268,12 @@ PerDof<double> moments(double mx, double mz) {
     return f;
 }
 
-// Rigid-plastic rows on the circle C = 10 N·m: a load (−6, −6) on b (section load (6, 6), U = 0.849)
-// gives each row the bound 6/0.849 = 7.07 = C/√2: the rows saturate together where the ray leaves
-// the circle (the box of independent limits would let both reach 10). A row the last load did not
-// use keeps C·(1 − Σ others/C): after (0, −6) the Mx row gets max(radial 0, 10·(1 − 0.6)) = 4,
-// the Mz row the radial 6/0.6 = 10.
+// Rigid-plastic rows on the circle C = 10 N·m. A load (−6, −6) on b (section load (6, 6), U = 0.6√2)
+// gives each row the larger of the ray's point, 6/U = 10/√2 (where the rows saturate together), and
+// the tangent plane's reach in its own component, 6 + (1 − U)/(∂U/∂s) = 10√2 − 6 = 8.14 (the box of
+// independent limits would give 10). A row the last load did not use (no slope) keeps the
+// cross-polytope's C·(1 − Σ others/C): after (0, −6) the Mx row gets 10·(1 − 0.6) = 4, the Mz row the
+// radial 6/0.6 = 10.
 TEST(CoupledYield, RigidPlasticRowBoundsFollowTheSurfaceAlongTheLastLoad) {
     PlasticJointLaw law(circle_joint(10.0, std::nullopt));
     const PerDof<double> zero{}, masses{1, 1, 1, 1, 1, 1};
@@ -281,8 +282,8 @@ TEST(CoupledYield, RigidPlasticRowBoundsFollowTheSurfaceAlongTheLastLoad) {
     EXPECT_DOUBLE_EQ(plan[index(Dof::Mx)]->bound, 10.0);  // nothing known yet: the dof's own capacity
     law.settle(zero, moments(-6, -6), 0.01);
     plan = law.plan(zero, 0.01, masses);
-    EXPECT_NEAR(plan[index(Dof::Mx)]->bound, 10.0 / std::sqrt(2.0), 1e-12);
-    EXPECT_NEAR(plan[index(Dof::Mz)]->bound, 10.0 / std::sqrt(2.0), 1e-12);
+    EXPECT_NEAR(plan[index(Dof::Mx)]->bound, 10.0 * std::sqrt(2.0) - 6.0, 1e-12);
+    EXPECT_NEAR(plan[index(Dof::Mz)]->bound, 10.0 * std::sqrt(2.0) - 6.0, 1e-12);
     law.settle(zero, moments(0, -6), 0.02);
     plan = law.plan(zero, 0.01, masses);
     EXPECT_NEAR(plan[index(Dof::Mx)]->bound, 4.0, 1e-12);

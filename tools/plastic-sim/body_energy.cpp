@@ -17,7 +17,7 @@ Mat from_quaternion(const Quaternion& q) {
 double kinetic_energy(const SceneBody& body, const BodyState& s) {
     const double m = body.mass;
     const auto& [a, b, c] = body.size;
-    const Vec3 principal = {m * (b * b + c * c) / 12, m * (a * a + c * c) / 12, m * (a * a + b * b) / 12};
+    const Vec3 principal = body.inertia ? *body.inertia : Vec3{m * (b * b + c * c) / 12, m * (a * a + c * c) / 12, m * (a * a + b * b) / 12};
     const Mat r = from_quaternion(s.orientation);
     // ω in the body's frame: the columns of R are the body axes in the world.
     const Vec3 w_body = {dot({r[0][0], r[1][0], r[2][0]}, s.angular_velocity), dot({r[0][1], r[1][1], r[2][1]}, s.angular_velocity),
@@ -25,6 +25,13 @@ double kinetic_energy(const SceneBody& body, const BodyState& s) {
     double rotational = 0.0;
     for (int i = 0; i < 3; ++i) rotational += principal[i] * w_body[i] * w_body[i];
     return 0.5 * m * dot(s.velocity, s.velocity) + 0.5 * rotational;
+}
+
+Vec3 world_point(const BodyState& s, const Vec3& local) {
+    const Mat r = from_quaternion(s.orientation);
+    Vec3 p = s.position;
+    for (int i = 0; i < 3; ++i) p[i] += dot(r[i], local);
+    return p;
 }
 
 }  // namespace plascap

@@ -1,11 +1,15 @@
 #pragma once
-// The kinetic energy of a scene's box body, for energy ledgers: ½·m·v² + ½·ωᵀ·I·ω with the box's
-// principal inertia m(b² + c²)/12, … (any dynamics text, e.g. Meriam & Kraige, Table D/4).
+// A scene body's motion for energy ledgers and reports: its kinetic energy ½·m·v² + ½·ωᵀ·I·ω with its
+// principal inertia (given, or the box's m(b² + c²)/12, …; any dynamics text, e.g. Meriam & Kraige,
+// Table D/4), and where a point of it is.
 #include "scene.hpp"
 #include "scene_engine.hpp"
 
 namespace plascap {
 
 double kinetic_energy(const SceneBody& body, const BodyState& state);
+
+// The world position of `local` (body frame, from the centre) [m].
+Vec3 world_point(const BodyState& state, const Vec3& local);
 
 }  // namespace plascap

@@ -19,6 +19,9 @@ btTransform joint_frame(const SceneJoint& joint) {
     return btTransform(basis, bt(joint.anchor));
 }
 
+// The collision group of a structure's segments (a bit Bullet's default groups leave free).
+constexpr int kStructureGroup = 64;
+
 template <class Joint>
 class BulletScene : public SceneEngine {
 public:
@@ -26,12 +29,17 @@ public:
         : scene_(scene), constraint_(constraint), world_(bt(scene.gravity), scene.iterations), schedule_(scene) {
         for (const SceneBody& b : scene.bodies) {
             const btQuaternion q(b.orientation[1], b.orientation[2], b.orientation[3], b.orientation[0]);
+            const btVector3 inertia = b.inertia ? bt(*b.inertia) : btVector3(0, 0, 0);
             boxes_.push_back(std::make_unique<BulletBox>(bt(b.size) * 0.5, b.is_static ? 0.0 : b.mass,
-                                                         btTransform(q, bt(b.position))));
+                                                         btTransform(q, bt(b.position)), b.inertia ? &inertia : nullptr));
             btRigidBody& body = boxes_.back()->body();
             body.setLinearVelocity(bt(b.velocity));
             body.setAngularVelocity(bt(b.angular_velocity));
-            world_.world().addRigidBody(&body);
+            if (b.structure) {  // a structure's segments pass through each other, and collide with the rest
+                world_.world().addRigidBody(&body, kStructureGroup, btBroadphaseProxy::AllFilter ^ kStructureGroup);
+            } else {
+                world_.world().addRigidBody(&body);
+            }
         }
         for (const SceneJoint& j : scene.joints) {
             btRigidBody* a = j.a ? &boxes_[*j.a]->body() : nullptr;
@@ -59,6 +67,12 @@ public:
     }
 
     double time() const override { return time_; }
+
+    void apply_load(std::size_t index, const Vec3& force, const Vec3& point, const Vec3& moment) override {
+        btRigidBody& b = boxes_[index]->body();
+        b.applyForce(bt(force), bt(point) - b.getCenterOfMassPosition());
+        b.applyTorque(bt(moment));
+    }
 
     BodyState body(std::size_t index) const override {
         const btRigidBody& b = boxes_[index]->body();

@@ -107,7 +107,7 @@ PerDof<std::optional<double>> given_stiffness(const Json& j, const std::string& 
 
 // "yield_surface" (coupled | box) and "torsion" (fully-plastic | paper): checked for every joint,
 // meaningful for section joints only.
-void read_yield_choice(const Json& j, const std::string& where, bool from_section, SectionJointOptions& o) {
+void yield_choice(const Json& j, const std::string& where, bool from_section, SectionJointOptions& o) {
     o.coupled = from_section;
     if (j.contains("yield_surface")) {
         const std::string name = text(j["yield_surface"], where + ".yield_surface");
@@ -160,6 +160,14 @@ void breaking_limits(const std::optional<Material>& material, PlasticJointSettin
 
 }  // namespace
 
+ValidSection read_joint_section(const Json& j, const std::string& where, const MaterialCatalogue& catalogue) {
+    return joint_section(j, where, catalogue);
+}
+
+void read_yield_choice(const Json& j, const std::string& where, bool from_section, SectionJointOptions& options) {
+    yield_choice(j, where, from_section, options);
+}
+
 SceneJoint parse_joint(const Json& j, const std::string& where_in, const std::vector<SceneBody>& bodies,
                        const MaterialCatalogue& catalogue) {
     require_object(j, where_in);
@@ -193,7 +201,7 @@ SceneJoint parse_joint(const Json& j, const std::string& where_in, const std::ve
     }
     const bool from_section = !j.contains("capacities");
     SectionJointOptions options;
-    read_yield_choice(j, where, from_section, options);
+    yield_choice(j, where, from_section, options);
     if (j.contains("length")) {
         if (!from_section) throw InputError(where + ".length: a stiffness from a length needs a \"section\" or \"shape\"");
         options.segment_length = positive_number(j["length"], where + ".length");

@@ -111,6 +111,12 @@ public:
 
     double time() const override { return time_; }
 
+    void apply_load(std::size_t index, const Vec3& force, const Vec3& point, const Vec3& moment) override {
+        if (!bodies_[index]) return;  // a static body takes no load
+        dBodyAddForceAtPos(bodies_[index], force[0], force[1], force[2], point[0], point[1], point[2]);
+        dBodyAddTorque(bodies_[index], moment[0], moment[1], moment[2]);
+    }
+
     BodyState body(std::size_t index) const override {
         BodyState s;
         if (!bodies_[index]) {
@@ -155,7 +161,11 @@ private:
         }
         dBodyID body = dBodyCreate(world_);
         dMass mass;
-        dMassSetBoxTotal(&mass, b.mass, b.size[0], b.size[1], b.size[2]);
+        if (b.inertia) {
+            dMassSetParameters(&mass, b.mass, 0, 0, 0, (*b.inertia)[0], (*b.inertia)[1], (*b.inertia)[2], 0, 0, 0);
+        } else {
+            dMassSetBoxTotal(&mass, b.mass, b.size[0], b.size[1], b.size[2]);
+        }
         dBodySetMass(body, &mass);
         dGeomSetBody(geom, body);
         dBodySetPosition(body, b.position[0], b.position[1], b.position[2]);
@@ -163,6 +173,7 @@ private:
         dBodySetLinearVel(body, b.velocity[0], b.velocity[1], b.velocity[2]);
         dBodySetAngularVel(body, b.angular_velocity[0], b.angular_velocity[1], b.angular_velocity[2]);
         bodies_.push_back(body);
+        if (b.structure) structure_.insert(body);
     }
 
     static void near_callback(void* data, dGeomID g1, dGeomID g2) {
@@ -170,6 +181,7 @@ private:
         const dBodyID b1 = dGeomGetBody(g1), b2 = dGeomGetBody(g2);
         if (!b1 && !b2) return;
         if (b1 && b2 && self->joined_.count(std::minmax(b1, b2))) return;  // joined bodies do not collide
+        if (self->structure_.count(b1) && self->structure_.count(b2)) return;  // nor a structure's segments
         dContact contact[kMaxContacts];
         const int n = dCollide(g1, g2, kMaxContacts, &contact[0].geom, sizeof(dContact));
         for (int i = 0; i < n; ++i) {
@@ -189,6 +201,7 @@ private:
     std::vector<dBodyID> bodies_;  // nullptr for static bodies
     std::vector<std::unique_ptr<OdePlasticJoint>> joints_;
     std::set<std::pair<dBodyID, dBodyID>> joined_;
+    std::set<dBodyID> structure_;
     std::size_t steps_ = 0;
     double time_ = 0.0;
 };

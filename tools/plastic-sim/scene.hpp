@@ -25,6 +25,33 @@ struct SceneBody {
     Vec3 velocity{};          // initial [m/s]
     Vec3 angular_velocity{};  // initial [rad/s]
     bool is_static = false;
+    // Principal moments of inertia about the body's own x, y, z through its centre [kg·m²]; none:
+    // the box's, m(b² + c²)/12, … (a structure's segment has its section's, not a box's).
+    std::optional<Vec3> inertia;
+    bool structure = false;  // a structure's segment: collides with other bodies, not with other segments
+};
+
+// A point of a body that a structure names (a node), or where a load acts.
+struct BodyPoint {
+    std::size_t body = 0;
+    Vec3 local{};  // in the body's frame, from its centre [m]
+};
+
+// An external force and moment on a body, in world directions, scaled by a piecewise-linear
+// factor of time (constant beyond its ends; none: 1).
+struct SceneLoad {
+    std::string node;
+    BodyPoint at;
+    Vec3 force{};   // [N]
+    Vec3 moment{};  // [N·m]
+    std::vector<std::pair<double, double>> history;  // (t [s], factor), t strictly increasing
+    double factor(double time) const;
+};
+
+struct SceneNode {
+    std::string name;
+    Vec3 position{};  // where it starts [m]
+    BodyPoint at;     // the material point that carries it: of the first segment that meets it
 };
 
 struct SceneJoint {
@@ -44,6 +71,8 @@ struct Scene {
     Vec3 gravity{0, -9.81, 0};
     std::vector<SceneBody> bodies;
     std::vector<SceneJoint> joints;
+    std::vector<SceneNode> nodes;  // from a structure ("nodes", "members"; docs/structures.md)
+    std::vector<SceneLoad> loads;
 
     std::size_t steps() const;  // duration/dt, rounded to the nearest whole step (at least 1)
 };

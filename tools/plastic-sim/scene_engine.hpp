@@ -25,6 +25,8 @@ public:
     virtual std::string description() const = 0;  // e.g. "Bullet 3.24, double precision"
     // Engages the joints whose time has come, then advances the world by the scene's dt.
     virtual void step() = 0;
+    // Adds a force at a world point and a moment (world directions) to a body for the next step only.
+    virtual void apply_load(std::size_t body, const Vec3& force, const Vec3& point, const Vec3& moment) = 0;
     virtual double time() const = 0;
     virtual BodyState body(std::size_t index) const = 0;
     // nullptr until the joint engages.

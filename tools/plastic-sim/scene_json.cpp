@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "joint_json.hpp"
+#include "structure_json.hpp"
 #include "plascap/input_error.hpp"
 #include "plascap/json_message.hpp"
 #include "scene.hpp"
@@ -77,7 +78,8 @@ int parse_iterations(const Json& j) {
 
 Scene parse_scene(const Json& j, const MaterialCatalogue& catalogue) {
     require_object(j, "scene");
-    reject_unknown_keys(j, "scene", {"name", "description", "dt", "duration", "iterations", "gravity", "bodies", "joints"});
+    reject_unknown_keys(j, "scene", {"name", "description", "dt", "duration", "iterations", "gravity", "bodies", "joints",
+                                     "nodes", "members", "supports", "loads"});
     Scene scene;
     scene.dt = positive_number(member(j, "dt", "scene"), "dt");
     scene.duration = positive_number(member(j, "duration", "scene"), "duration");
@@ -88,8 +90,10 @@ Scene parse_scene(const Json& j, const MaterialCatalogue& catalogue) {
     if (j.contains("gravity")) scene.gravity = vec3(j["gravity"], "gravity");
     within(scene.gravity, kMaxSpeed, "gravity", "1e5 m/s²");
 
-    const Json& bodies = member(j, "bodies", "scene");
-    if (!bodies.is_array() || bodies.empty()) throw InputError("bodies: expected a non-empty array");
+    check_structure_keys(j);
+    if (!j.contains("bodies") && !j.contains("members")) throw InputError("scene: give \"bodies\" or a structure's \"members\"");
+    const Json& bodies = j.contains("bodies") ? j["bodies"] : Json::array();
+    if (!bodies.is_array() || (bodies.empty() && !j.contains("members"))) throw InputError("bodies: expected a non-empty array");
     std::set<std::string> names;
     for (std::size_t i = 0; i < bodies.size(); ++i) {
         scene.bodies.push_back(parse_body(bodies[i], "bodies[" + std::to_string(i) + "]"));
@@ -97,6 +101,7 @@ Scene parse_scene(const Json& j, const MaterialCatalogue& catalogue) {
             throw InputError("bodies[" + std::to_string(i) + "]: a second body named \"" + scene.bodies.back().name + "\"");
         }
     }
+    add_structure(j, scene, catalogue);  // segments after the bodies: joints may name neither
     if (j.contains("joints")) {
         const Json& joints = j["joints"];
         if (!joints.is_array()) throw InputError("joints: expected an array");

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <ostream>
 
+#include "body_energy.hpp"
 #include "trace_csv.hpp"
 
 namespace plascap {
@@ -37,9 +38,12 @@ SimulationResult run_simulation(const Scene& scene, SceneEngine& engine, const S
     SimulationResult result;
     result.steps = scene.steps();
     if (options.trace_csv) write_trace_header(*options.trace_csv, scene);
+    EnergyAccount energy(scene, engine);
     for (std::size_t i = 0; i < result.steps; ++i) {
+        const std::vector<AppliedLoad> loads = apply_scene_loads(scene, engine);
         engine.step();
-        if (options.trace_csv) write_trace_row(*options.trace_csv, scene, engine);
+        energy.after_step(engine, loads);
+        if (options.trace_csv) write_trace_row(*options.trace_csv, scene, engine, energy.ledger());
         if (options.progress && seconds_since(start) >= next_report) {
             next_report += 2.0;
             *options.progress << "plastic-sim: step " << i + 1 << " of " << result.steps << " (t = " << engine.time()
@@ -50,6 +54,8 @@ SimulationResult run_simulation(const Scene& scene, SceneEngine& engine, const S
     result.wall_seconds = seconds_since(start);
     for (std::size_t i = 0; i < scene.bodies.size(); ++i) result.bodies.push_back(engine.body(i));
     for (std::size_t j = 0; j < scene.joints.size(); ++j) result.joints.push_back(summarise(engine.joint_law(j)));
+    for (const SceneNode& n : scene.nodes) result.nodes.push_back(world_point(engine.body(n.at.body), n.at.local));
+    result.energy = energy.ledger();
     result.warnings = engine.warnings();
     return result;
 }

@@ -4,6 +4,7 @@
 #include <iosfwd>
 #include <vector>
 
+#include "energy_ledger.hpp"
 #include "scene_engine.hpp"
 
 namespace plascap {
@@ -24,6 +25,8 @@ struct SimulationResult {
     double wall_seconds = 0.0;
     std::vector<BodyState> bodies;
     std::vector<JointSummary> joints;
+    std::vector<Vec3> nodes;  // where each scene node's material point is at the end [m]
+    EnergyLedger energy;
     std::vector<std::string> warnings;  // from the engine
 };
 
@@ -34,9 +37,9 @@ struct SimulationOptions {
 
 SimulationResult run_simulation(const Scene& scene, SceneEngine& engine, const SimulationOptions& options);
 
-// The end state as the JSON summary of the issue: {"time", "bodies": {NAME: {"position",
-// "velocity"}}, "joints": {NAME: {"broken", "broken_at", "plastic_displacement",
-// "plastic_rotation", "dissipated", ...}}}.
+// The end state as the JSON summary: {"time", "bodies": {NAME: {"position", "velocity"}},
+// "joints": {NAME: {"broken", "broken_at", "plastic_displacement", "plastic_rotation",
+// "dissipated", ...}}, "nodes": {NAME: {"position", "displacement"}}, "energy": {...}}.
 void write_json_summary(std::ostream& out, const Scene& scene, const SimulationResult& result, const std::string& engine);
 void write_text_summary(std::ostream& out, const Scene& scene, const SimulationResult& result, const std::string& engine);
 

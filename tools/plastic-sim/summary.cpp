@@ -41,6 +41,26 @@ std::string regimes_text(const SceneJoint& joint, const JointSummary& s) {
     return out.str();
 }
 
+void write_energy(std::ostream& out, const EnergyLedger& e) {
+    out << "\nenergy [J]: kinetic " << std::setprecision(6) << e.kinetic << ", gravitational " << e.gravitational << ", elastic "
+        << e.elastic << ", dissipated " << e.dissipated << ", external work " << e.external_work << ", initial " << e.initial
+        << "; remainder (contacts, solver) " << e.remainder() << " = " << std::setprecision(3)
+        << (e.handled > 0 ? 100.0 * e.remainder() / e.handled : 0.0) << " % of the " << std::setprecision(6) << e.handled
+        << " J handled\n";
+}
+
+void write_nodes(std::ostream& out, const Scene& scene, const SimulationResult& r) {
+    if (scene.nodes.empty()) return;
+    out << "\nnodes                 position [m]                              displacement [m]\n";
+    for (std::size_t n = 0; n < scene.nodes.size(); ++n) {
+        out << "  " << std::left << std::setw(18) << scene.nodes[n].name << std::right;
+        for (double v : r.nodes[n]) out << std::setw(13) << std::setprecision(6) << v;
+        out << "  ";
+        for (double v : difference(r.nodes[n], scene.nodes[n].position)) out << std::setw(13) << std::setprecision(6) << v;
+        out << '\n';
+    }
+}
+
 }  // namespace
 
 void write_json_summary(std::ostream& out, const Scene& scene, const SimulationResult& r, const std::string& engine) {
@@ -67,6 +87,15 @@ void write_json_summary(std::ostream& out, const Scene& scene, const SimulationR
             {"dissipated", s.dissipated},
             {"dofs", regimes_json(scene.joints[k], s)}};
     }
+    if (!scene.nodes.empty()) {
+        j["nodes"] = nlohmann::json::object();
+        for (std::size_t n = 0; n < scene.nodes.size(); ++n)
+            j["nodes"][scene.nodes[n].name] = {{"position", r.nodes[n]}, {"displacement", difference(r.nodes[n], scene.nodes[n].position)}};
+    }
+    const EnergyLedger& e = r.energy;
+    j["energy"] = {{"kinetic", e.kinetic},         {"gravitational", e.gravitational}, {"elastic", e.elastic},
+                   {"dissipated", e.dissipated},   {"external_work", e.external_work}, {"initial", e.initial},
+                   {"remainder", e.remainder()},   {"handled", e.handled}};
     out << j.dump(2) << '\n';
 }
 
@@ -84,6 +113,8 @@ void write_text_summary(std::ostream& out, const Scene& scene, const SimulationR
         for (double v : r.bodies[i].velocity) out << std::setw(13) << std::setprecision(6) << v;
         out << '\n';
     }
+    write_energy(out, r.energy);
+    write_nodes(out, scene, r);
     if (scene.joints.empty()) return;
     out << "\njoints                state               plastic [m]  plastic [rad]  dissipated [J]  dofs\n";
     for (std::size_t k = 0; k < scene.joints.size(); ++k) {

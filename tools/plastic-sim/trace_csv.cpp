@@ -1,5 +1,7 @@
 #include "trace_csv.hpp"
 
+#include "body_energy.hpp"
+
 #include <ostream>
 
 namespace plascap {
@@ -17,10 +19,14 @@ void write_trace_header(std::ostream& out, const Scene& scene) {
         out << ',' << j.name << ".plastic_displacement," << j.name << ".plastic_rotation," << j.name << ".dissipated,"
             << j.name << ".broken";
     }
+    for (const SceneNode& n : scene.nodes) {
+        for (const char* c : {"dx", "dy", "dz"}) out << ",node." << n.name << '.' << c;
+    }
+    out << ",energy.kinetic,energy.gravitational,energy.elastic,energy.dissipated,energy.external_work,energy.remainder";
     out << '\n';
 }
 
-void write_trace_row(std::ostream& out, const Scene& scene, const SceneEngine& engine) {
+void write_trace_row(std::ostream& out, const Scene& scene, const SceneEngine& engine, const EnergyLedger& e) {
     out << engine.time();
     for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
         const BodyState s = engine.body(i);
@@ -38,6 +44,12 @@ void write_trace_row(std::ostream& out, const Scene& scene, const SceneEngine& e
         out << ',' << (law ? law->plastic_displacement() : 0.0) << ',' << (law ? law->plastic_rotation() : 0.0) << ','
             << (law ? law->dissipated() : 0.0) << ',' << (law && law->broken() ? 1 : 0);
     }
+    for (const SceneNode& n : scene.nodes) {
+        const Vec3 p = world_point(engine.body(n.at.body), n.at.local);
+        for (int i = 0; i < 3; ++i) out << ',' << p[i] - n.position[i];
+    }
+    out << ',' << e.kinetic << ',' << e.gravitational << ',' << e.elastic << ',' << e.dissipated << ',' << e.external_work << ','
+        << e.remainder();
     out << '\n';
 }
 

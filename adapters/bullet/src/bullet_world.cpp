@@ -19,13 +19,16 @@ BulletWorld::~BulletWorld() = default;
 
 void BulletWorld::step(double dt) { world_->stepSimulation(dt, 0, dt); }
 
-BulletBox::BulletBox(const btVector3& half, double mass, const btTransform& transform)
+BulletBox::BulletBox(const btVector3& half, double mass, const btTransform& transform, const btVector3* given_inertia)
     : shape_(std::make_unique<btBoxShape>(half)), motion_(std::make_unique<btDefaultMotionState>(transform)) {
     // Bullet's default collision margin (0.04 m) lies inside the box: a box thinner than twice it
     // would collide as a different shape. Keep the margin within a fifth of the smallest half edge.
     shape_->setMargin(std::min<btScalar>(shape_->getMargin(), 0.2 * half[half.minAxis()]));
     btVector3 inertia(0, 0, 0);
-    if (mass > 0.0) shape_->calculateLocalInertia(mass, inertia);
+    if (mass > 0.0) {
+        if (given_inertia) inertia = *given_inertia;
+        else shape_->calculateLocalInertia(mass, inertia);
+    }
     body_ = std::make_unique<btRigidBody>(btRigidBody::btRigidBodyConstructionInfo(mass, motion_.get(), shape_.get(), inertia));
     body_->setActivationState(DISABLE_DEACTIVATION);
 }

@@ -37,7 +37,9 @@ PerDof<std::optional<double>> coupled_hold_bounds(const YieldCondition& conditio
     const double share = cross_polytope_share(axes, loads);
     // Far inside, the cross-polytope floors alone leave every row at least half its capacity above
     // its load; the exact U is needed only nearer the surface.
-    const double U = loaded && share > kFarInside ? condition.evaluate(loads, hint).utilisation : 0.0;
+    YieldEvaluation e;
+    if (loaded && share > kFarInside) e = condition.evaluate(loads, hint);
+    const double U = e.utilisation;
     for (std::size_t i = 0; i < kDofCount; ++i) {
         if (!laws[i] || !rigid_plastic(*laws[i])) continue;
         if (!loaded) {  // nothing known yet: the dof's own capacity (the smaller side before any load)
@@ -47,7 +49,13 @@ PerDof<std::optional<double>> coupled_hold_bounds(const YieldCondition& conditio
         const double own = axes.at(i, loads[i]);
         const double radial = U > 0.0 && std::isfinite(U) ? std::abs(loads[i]) / U : 0.0;
         const double others = share - std::abs(loads[i]) / own;
-        bounds[i] = std::max(radial, own * std::max(0.0, 1.0 - others));
+        double bound = std::max(radial, own * std::max(0.0, 1.0 - others));
+        // Inside the surface, a row whose load moves U may also take what U's tangent plane leaves
+        // it, |s_i| + (1 − U)/|∂U/∂s_i| (capped at its own capacity): the load can grow in that one
+        // component to the surface, to first order, without the step's noise flowing it early.
+        const double slope = std::abs(e.gradient[i]);
+        if (U > 0.0 && U < 1.0 && slope > 0.0) bound = std::max(bound, std::min(own, std::abs(loads[i]) + (1.0 - U) / slope));
+        bounds[i] = bound;
     }
     return bounds;
 }

@@ -6,7 +6,8 @@
 //     the ray leaves the surface — but never less than what the dof could take alone with the others
 //     held, on the inscribed cross-polytope Σ|s_j|/C_j ≤ 1 (C_j where the surface meets dof j's
 //     axis, over all six dofs, rigid ones too): a dof the last load did not use keeps a share of
-//     its strength;
+//     its strength; inside the surface, a row that moves U may also grow to U's tangent plane,
+//     |s_i| + (1 − U)/|∂U/∂s_i| (capped at C_i), so that the steps' noise does not flow it early;
 //   elastic-plastic dofs: after each step, an explicit return mapping of the spring loads onto the
 //     surface by cutting planes (Ortiz & Simo, Int. J. Numer. Meth. Eng. 23, 1986), Δx_p = Δλ·∇U:
 //     associated flow, and the work load·Δx_p ≥ 0 (U is homogeneous: s·∇U = U > 0).

@@ -31,10 +31,12 @@ private:
 };
 
 // A box body of half extents `half` [m], mass [kg] (0: static), at `transform`; never sleeps, so a
-// slow plastic flow is never frozen by deactivation. Owns its shape and motion state.
+// slow plastic flow is never frozen by deactivation. Owns its shape and motion state. `inertia`, the
+// principal moments about the box's axes [kg·m²], replaces the solid box's (a beam segment's mass
+// is its section's, not a box's).
 class BulletBox {
 public:
-    BulletBox(const btVector3& half, double mass, const btTransform& transform);
+    BulletBox(const btVector3& half, double mass, const btTransform& transform, const btVector3* inertia = nullptr);
     ~BulletBox();
     BulletBox(const BulletBox&) = delete;
     BulletBox& operator=(const BulletBox&) = delete;

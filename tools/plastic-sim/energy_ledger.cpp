@@ -1,0 +1,59 @@
+#include "energy_ledger.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "body_energy.hpp"
+
+namespace plascap {
+
+std::vector<AppliedLoad> apply_scene_loads(const Scene& scene, SceneEngine& engine) {
+    std::vector<AppliedLoad> applied;
+    for (const SceneLoad& load : scene.loads) {
+        const double f = load.factor(engine.time());
+        AppliedLoad a;
+        a.body = load.at.body;
+        a.local = load.at.local;
+        a.point = world_point(engine.body(a.body), a.local);
+        for (int i = 0; i < 3; ++i) a.force[i] = f * load.force[i], a.moment[i] = f * load.moment[i];
+        engine.apply_load(a.body, a.force, a.point, a.moment);
+        applied.push_back(a);
+    }
+    return applied;
+}
+
+EnergyAccount::EnergyAccount(const Scene& scene, const SceneEngine& engine) : scene_(scene) {
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+        const BodyState s = engine.body(i);
+        start_.push_back(s.position);
+        if (!scene.bodies[i].is_static) ledger_.initial += kinetic_energy(scene.bodies[i], s);
+    }
+    ledger_.kinetic = ledger_.initial;
+    ledger_.handled = ledger_.initial;
+}
+
+void EnergyAccount::after_step(SceneEngine& engine, const std::vector<AppliedLoad>& loads) {
+    EnergyLedger& l = ledger_;
+    l.kinetic = l.gravitational = l.elastic = l.dissipated = 0.0;
+    for (std::size_t i = 0; i < scene_.bodies.size(); ++i) {
+        if (scene_.bodies[i].is_static) continue;
+        const BodyState s = engine.body(i);
+        l.kinetic += kinetic_energy(scene_.bodies[i], s);
+        l.gravitational -= scene_.bodies[i].mass * dot(scene_.gravity, difference(s.position, start_[i]));
+    }
+    for (std::size_t j = 0; j < scene_.joints.size(); ++j) {
+        if (const PlasticJointLaw* law = engine.joint_law(j)) {
+            l.elastic += law->elastic_energy(engine.joint_positions(j));
+            l.dissipated += law->dissipated();
+        }
+    }
+    for (const AppliedLoad& a : loads) {
+        const BodyState s = engine.body(a.body);
+        l.external_work += dot(a.force, difference(world_point(s, a.local), a.point)) +
+                           dot(a.moment, s.angular_velocity) * scene_.dt;
+    }
+    l.handled = std::max({l.handled, std::abs(l.kinetic), std::abs(l.gravitational), std::abs(l.elastic),
+                          std::abs(l.dissipated), std::abs(l.external_work)});
+}
+
+}  // namespace plascap
