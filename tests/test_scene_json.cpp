@@ -8,6 +8,7 @@
 
 #include "plascap/input_error.hpp"
 #include "scene.hpp"
+#include "scene_errors.hpp"
 
 namespace plascap {
 namespace {
@@ -19,14 +20,7 @@ std::string scene_with(const std::string& joint_extra, const std::string& body_e
            joint_extra + "}]}";
 }
 
-std::string error_of(const std::string& text) {
-    try {
-        parse_scene_json(text);
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "(accepted)";
-}
+std::string error_of(const std::string& text) { return test::scene_error(text); }
 
 TEST(SceneJson, ReadsBodiesJointsAndDefaults) {
     const Scene s = parse_scene_json(scene_with(R"("capacities": {"N": 100, "Mz": 5, "Mz_neg": 3})", R"("density": 10)"));

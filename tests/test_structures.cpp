@@ -11,6 +11,7 @@
 
 #include "plascap/input_error.hpp"
 #include "scene.hpp"
+#include "scene_errors.hpp"
 #include "simulation.hpp"
 
 namespace plascap {
@@ -47,14 +48,7 @@ const std::string kSimple = R"({"A": {"translations": "xyz", "rotations": "x"}, 
 const std::string kPropped = R"({"A": "fixed", "C": {"translations": "yz"}})";
 const std::string kFixed = R"({"A": "fixed", "C": "fixed"})";
 
-std::string error_of(const std::string& text) {
-    try {
-        parse_scene_json(text);
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "(accepted)";
-}
+std::string error_of(const std::string& text) { return test::scene_error(text); }
 
 // The simply supported beam: 10 segments of 0.4 m with the IPE 200's mass ρ·A·ℓ (A = 28.48 cm²) and
 // inertia ρ·ℓ·Ixx + m·ℓ²/12 about the section's x (Ixx = 1943 cm⁴); 8 joints inside the members, one
