@@ -12,7 +12,7 @@ import sys
 
 SIM = "build/tools/plastic-sim/plastic-sim"
 CALC = "build/tools/section-calc/section-calc"
-ENGINES = [("bullet", 100), ("ode", 300)]
+ENGINES = [("bullet", 100), ("ode", 500)]
 
 
 def member(name, a, b, z, segments):

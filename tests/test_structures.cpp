@@ -142,7 +142,7 @@ TEST_P(StructureCollapse, TextbookCollapseLoadsBracketTheSimulation) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Engines, StructureCollapse,
-                         ::testing::Values(Collapse{"bullet", 100}, Collapse{"bullet-6dof-spring", 100}, Collapse{"ode", 300}),
+                         ::testing::Values(Collapse{"bullet", 100}, Collapse{"bullet-6dof-spring", 100}, Collapse{"ode", 500}),
                          [](const ::testing::TestParamInfo<Collapse>& info) {
                              std::string name = info.param.engine;
                              std::replace(name.begin(), name.end(), '-', '_');

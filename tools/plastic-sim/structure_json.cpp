@@ -163,6 +163,12 @@ Member parse_member(const Json& m, const std::string& where_in, const std::map<s
 
     SectionJointOptions options;
     read_yield_choice(m, where, true, options);
+    // Plastic hinges: the rotations yield, the translations are rigid — their forces still count on the
+    // coupled surface and lower the moment capacity. With plastic translations too, the radial row
+    // bounds pin the shear and axial rows at the load of the moment the hinge forms, and the next
+    // step's redistribution slides them: a portal then collapsed 8 % early (docs/structures.md).
+    for (Dof dof : kAllDofs)
+        if (!is_rotation(dof)) options.modes[index(dof)] = DofMode::Rigid;
     const std::string key = (m.contains("shape") ? m["shape"] : m["section"]).dump() + (m.contains("material") ? m["material"].dump() : "") +
                             (options.coupled ? "coupled" : "box") + torsion_capacity_name(options.torsion);
     auto cached = cache.find(key);
@@ -261,10 +267,8 @@ SceneJoint support_joint(const std::string& node, const Json& spec, const std::s
     const std::size_t b = m.end_body(at_start);
     if (all(translations) && all(rotations)) {
         // Fixed: in the member's frame, so that the support can form a plastic hinge with the
-        // section's capacities (translations rigid; their loads still count on the coupled surface).
-        PlasticJointSettings s = at_length(m.joint, m.segment_length, m.segment_length / 2);
-        for (Dof dof : kAllDofs)
-            if (!is_rotation(dof)) s.modes[index(dof)] = DofMode::Rigid;
+        // section's capacities, as the member's own joints do.
+        const PlasticJointSettings s = at_length(m.joint, m.segment_length, m.segment_length / 2);
         return joint_at("support " + node, std::nullopt, b, at, m.away_from(at_start), s);
     }
     // Partly restrained: rigid rows along the world directions named, free elsewhere (no hinge).
