@@ -83,7 +83,7 @@ TEST(PlasticSim, EveryExampleAgreesAcrossBulletAndOde) {
         {"paper-tension-block.json", 1e-3, "one rigid-plastic row: both engines solve it exactly"},
         {"cantilever-bending.json", 1e-3, "explicit elastic-plastic rows: no solver in the loop"},
         {"collapsing-stack.json", 0.15, "rigid-plastic rows under contact; break times must match to one step"},
-        {"charpy-impact.json", 0.35, "decided by contacts, which the engines model differently (docs/cross-engine.md)"},
+        {"charpy-impact.json", 0.4, "decided by contacts, which the engines model differently (docs/cross-engine.md)"},
     };
     for (const Agreement& a : agreements) {
         const Json bullet = run_json(a.scene, "bullet"), ode = run_json(a.scene, "ode");

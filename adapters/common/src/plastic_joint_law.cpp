@@ -1,5 +1,7 @@
 #include "plascap/adapters/plastic_joint_law.hpp"
 
+#include <cmath>
+
 #include "coupled_yield.hpp"
 
 namespace plascap {
@@ -28,14 +30,37 @@ const ElasticPlasticLaw* PlasticJointLaw::law(Dof dof) const {
     return law ? &*law : nullptr;
 }
 
-void PlasticJointLaw::start(const PerDof<double>& positions) {
+PerDof<double> PlasticJointLaw::continuous(const PerDof<double>& measured) const {
+    // A rotation dof's measured angle wraps at ±π; the law needs it continuous, or a joint turning
+    // past π books a 2π jump as flow (and its work with the wrong sign).
+    PerDof<double> out = measured;
+    for (Dof dof : kAllDofs) {
+        if (!is_rotation(dof)) continue;
+        const std::size_t i = index(dof);
+        const double turn = 2.0 * std::acos(-1.0);
+        const double step = measured[i] - last_measured_[i];
+        out[i] = last_continuous_[i] + (step - turn * std::round(step / turn));
+    }
+    return out;
+}
+
+void PlasticJointLaw::track(const PerDof<double>& measured, const PerDof<double>& continuous_positions) {
+    last_measured_ = measured;
+    last_continuous_ = continuous_positions;
+}
+
+void PlasticJointLaw::start(const PerDof<double>& measured) {
+    track(measured, measured);
+    const PerDof<double>& positions = measured;
     for (std::size_t i = 0; i < kDofCount; ++i) {
         if (laws_[i]) laws_[i]->start(positions[i]);
     }
 }
 
-PerDof<std::optional<RowCommand>> PlasticJointLaw::plan(const PerDof<double>& positions, double dt,
+PerDof<std::optional<RowCommand>> PlasticJointLaw::plan(const PerDof<double>& measured, double dt,
                                                         const PerDof<double>& effective_masses) {
+    const PerDof<double> positions = continuous(measured);
+    track(measured, positions);
     PerDof<std::optional<RowCommand>> commands;
     PerDof<std::optional<double>> bounds;
     if (settings_.yield_condition)
@@ -47,8 +72,10 @@ PerDof<std::optional<RowCommand>> PlasticJointLaw::plan(const PerDof<double>& po
     return commands;
 }
 
-bool PlasticJointLaw::settle(const PerDof<double>& positions, const PerDof<double>& forces, double time) {
+bool PlasticJointLaw::settle(const PerDof<double>& measured, const PerDof<double>& forces, double time) {
     if (broken()) return false;
+    const PerDof<double> positions = continuous(measured);
+    track(measured, positions);
     for (std::size_t i = 0; i < kDofCount; ++i) {
         if (laws_[i]) laws_[i]->settle(positions[i], forces[i]);
         last_loads_[i] = -forces[i];
@@ -83,7 +110,8 @@ double PlasticJointLaw::dissipated() const {
     return sum;
 }
 
-double PlasticJointLaw::elastic_energy(const PerDof<double>& positions) const {
+double PlasticJointLaw::elastic_energy(const PerDof<double>& measured) const {
+    const PerDof<double> positions = continuous(measured);
     double sum = 0.0;
     for (std::size_t i = 0; i < kDofCount; ++i) {
         if (laws_[i]) sum += laws_[i]->elastic_energy(positions[i]);

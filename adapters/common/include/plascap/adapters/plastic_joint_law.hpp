@@ -15,7 +15,8 @@ public:
     explicit PlasticJointLaw(const PlasticJointSettings& settings);
 
     // When the joint takes hold (it may be built before, on bodies that have moved since): these
-    // positions are its unloaded state. Engines lock rigid dofs at them too.
+    // positions are its unloaded state. Engines lock rigid dofs at them too. Every call takes the
+    // positions as measured; rotations are unwrapped across ±π against the previous call's.
     void start(const PerDof<double>& positions);
 
     // Row commands for the plastic dofs (empty for free and rigid ones), from the dof positions,
@@ -44,12 +45,16 @@ private:
     double accumulated(bool rotations) const;
 
     PerDof<ElasticPlasticLaw*> plastic_laws();
+    // The measured positions with the rotations unwrapped against the last ones seen (angles wrap at ±π).
+    PerDof<double> continuous(const PerDof<double>& measured) const;
+    void track(const PerDof<double>& measured, const PerDof<double>& continuous_positions);
 
     PlasticJointSettings settings_;
     PerDof<std::optional<ElasticPlasticLaw>> laws_;
     std::optional<double> broken_at_;
     PerDof<double> last_loads_{};  // the loads (−forces on b) of the last step, for a coupled condition
     YieldHint hint_;
+    PerDof<double> last_measured_{}, last_continuous_{};
     PerDof<double> axis_positive_{}, axis_negative_{};  // the condition's axis capacities
 };
 
