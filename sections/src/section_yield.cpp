@@ -45,6 +45,8 @@ SectionYieldState SectionYield::evaluate(const SectionLoads& load, const std::op
     const double shear = std::hypot(load.Qx / capacities_.Qx, load.Qz / capacities_.Qz);
     const double eta = shear + std::abs(load.T) / capacities_.T;
     state.utilisation = std::hypot(u, eta);  // U = √(u_NM² + η²)
+    state.nm_utilisation = u;
+    state.shear_torsion_share = eta;
     if (!(state.utilisation > 0.0) || !std::isfinite(state.utilisation)) return state;
     if (u > 0.0) state.nm_normal = hit.normal;
     // ∂U = (u·∂u + η·∂η)/U; ∂u is the surface's normal at the hit (the gauge's gradient).

@@ -200,9 +200,9 @@ SurfaceHit YieldSurface::from(const SectionResultant& origin, const SectionResul
     Vec3d p = as_vec(origin), u = as_vec(direction);
     for (int i = 0; i < 3; ++i) p[i] /= impl_->scale[i], u[i] /= impl_->scale[i];
     if (norm3(u) == 0.0) throw InputError("yield surface: a ray needs a direction");
-    if (!(utilisation(origin) < 1.0))
-        throw InputError("yield surface: the ray's origin is not inside the surface (utilisation " +
-                         std::to_string(utilisation(origin)) + ")");
+    const double inside = utilisation(origin);
+    if (!(inside < 1.0))
+        throw InputError("yield surface: the ray's origin is not inside the surface (utilisation " + std::to_string(inside) + ")");
     return impl_->ray(p, u, warm);
 }
 

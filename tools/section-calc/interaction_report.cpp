@@ -69,8 +69,8 @@ LoadCheck check_load(const SectionYield& yield, const SectionLoads& load, Torsio
     LoadCheck c;
     c.load = load;
     c.state = yield.evaluate(load);
-    c.nm_utilisation = yield.surface().utilisation({load.N, load.Mx, load.Mz});
-    c.share = shear_torsion_share(load, yield.shear_torsion());
+    c.nm_utilisation = c.state.nm_utilisation;
+    c.share = c.state.shear_torsion_share;
     c.torsion = torsion;
     return c;
 }

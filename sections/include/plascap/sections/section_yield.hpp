@@ -37,6 +37,8 @@ struct ShearTorsionCapacities {
 
 struct SectionYieldState {
     double utilisation = 0.0;           // U; +inf for a load the section can never carry
+    double nm_utilisation = 0.0;        // u_NM, the N–Mx–Mz part
+    double shear_torsion_share = 0.0;   // η
     SectionLoads gradient;              // ∂U/∂load (the outward normal of the yield condition)
     std::optional<SectionResultant> nm_normal;  // the N–M surface's normal, for a warm start
 };
