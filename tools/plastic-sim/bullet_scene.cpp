@@ -48,9 +48,7 @@ public:
     }
 
     ~BulletScene() override {
-        for (std::size_t i = 0; i < joints_.size(); ++i) {
-            if (schedule_.engaged(i)) joints_[i]->detach(world_.world());
-        }
+        joints_.clear();  // each leaves the world as it is destroyed
         for (auto& box : boxes_) world_.world().removeRigidBody(&box->body());
     }
 

@@ -1,5 +1,5 @@
 // A Scene in ODE: boxes as dBody + dGeom (static boxes: a geom without a body), joints as
-// OdePlasticJoint, collisions through a hash space with contacts of friction 0.25 and no bounce
+// OdePlasticJoints, collisions through a hash space with contacts of friction 0.25 and no bounce
 // (Bullet's default: 0.5 per body, multiplied).
 #include <algorithm>
 #include <cstdarg>
@@ -11,8 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "joint_schedule.hpp"
-#include "plascap/adapters/ode_plastic_joint.hpp"
+#include "plascap/adapters/ode_plastic_joints.hpp"
 #include "scene_engine.hpp"
 
 namespace plascap {
@@ -57,11 +56,7 @@ struct OdeLibrary {
 
 class OdeScene : public SceneEngine {
 public:
-    OdeScene(const Scene& scene, bool quick) : scene_(scene), quick_(quick), schedule_(scene) {
-        static OdeLibrary library;  // dInitODE2 once per process
-        ode_messages() = {};
-        dRandSetSeed(0);  // QuickStep reorders rows at random: the same scene gives the same run
-        world_ = dWorldCreate();
+    OdeScene(const Scene& scene, bool quick) : scene_(scene), quick_(quick), world_(new_world()), joints_(world_) {
         dWorldSetGravity(world_, scene.gravity[0], scene.gravity[1], scene.gravity[2]);
         dWorldSetQuickStepNumIterations(world_, scene.iterations);
         space_ = dHashSpaceCreate(nullptr);
@@ -72,13 +67,12 @@ public:
             Pose frame;
             frame.origin = j.anchor;
             for (int r = 0; r < 3; ++r) frame.rotation[r] = {j.axes[0][r], j.axes[1][r], j.axes[2][r]};
-            joints_.push_back(std::make_unique<OdePlasticJoint>(world_, a, bodies_[j.b], frame, j.settings));
-            if (a) joined_.insert(std::minmax(a, bodies_[j.b]));
+            joints_.add(a, bodies_[j.b], frame, j.settings, j.engage_at);
         }
     }
 
     ~OdeScene() override {
-        joints_.clear();
+        joints_ = OdePlasticJoints(world_);  // the joints go before their world
         dJointGroupDestroy(contacts_);
         dSpaceDestroy(space_);  // destroys the geoms
         dWorldDestroy(world_);  // and the bodies
@@ -91,20 +85,9 @@ public:
     }
 
     void step() override {
-        for (std::size_t i : schedule_.due(time_)) joints_[i]->engage(time_);
-        for (std::size_t i = 0; i < joints_.size(); ++i) {
-            if (schedule_.engaged(i)) joints_[i]->before_step(scene_.dt);
-        }
         dSpaceCollide(space_, this, &OdeScene::near_callback);
-        if (quick_) {
-            dWorldQuickStep(world_, scene_.dt);
-        } else {
-            dWorldStep(world_, scene_.dt);
-        }
+        joints_.step(scene_.dt, quick_ ? OdePlasticJoints::Stepper::Quick : OdePlasticJoints::Stepper::Exact);
         dJointGroupEmpty(contacts_);
-        for (std::size_t i = 0; i < joints_.size(); ++i) {
-            if (schedule_.engaged(i)) joints_[i]->after_step(scene_.dt);
-        }
         ++steps_;
         time_ = static_cast<double>(steps_) * scene_.dt;
     }
@@ -136,11 +119,11 @@ public:
     }
 
     const PlasticJointLaw* joint_law(std::size_t index) const override {
-        return schedule_.engaged(index) ? &joints_[index]->law() : nullptr;
+        return joints_[index].engaged() ? &joints_[index].law() : nullptr;
     }
 
-    PerDof<double> joint_forces(std::size_t index) const override { return joints_[index]->forces(); }
-    PerDof<double> joint_positions(std::size_t index) override { return joints_[index]->positions(); }
+    PerDof<double> joint_forces(std::size_t index) const override { return joints_[index].forces(); }
+    PerDof<double> joint_positions(std::size_t index) override { return joints_[index].positions(); }
 
     std::vector<std::string> warnings() const override {
         const OdeMessages& m = ode_messages();
@@ -150,6 +133,13 @@ public:
     }
 
 private:
+    static dWorldID new_world() {
+        static OdeLibrary library;  // dInitODE2 once per process
+        ode_messages() = {};
+        dRandSetSeed(0);  // QuickStep reorders rows at random: the same scene gives the same run
+        return dWorldCreate();
+    }
+
     void add_body(const SceneBody& b) {
         dGeomID geom = dCreateBox(space_, b.size[0], b.size[1], b.size[2]);
         const dQuaternion q = {b.orientation[0], b.orientation[1], b.orientation[2], b.orientation[3]};
@@ -180,7 +170,7 @@ private:
         auto* self = static_cast<OdeScene*>(data);
         const dBodyID b1 = dGeomGetBody(g1), b2 = dGeomGetBody(g2);
         if (!b1 && !b2) return;
-        if (b1 && b2 && self->joined_.count(std::minmax(b1, b2))) return;  // joined bodies do not collide
+        if (b1 && b2 && self->joints_.joined(b1, b2)) return;  // joined bodies do not collide
         if (self->structure_.count(b1) && self->structure_.count(b2)) return;  // nor a structure's segments
         dContact contact[kMaxContacts];
         const int n = dCollide(g1, g2, kMaxContacts, &contact[0].geom, sizeof(dContact));
@@ -194,13 +184,11 @@ private:
 
     const Scene& scene_;
     bool quick_;
-    JointSchedule schedule_;
-    dWorldID world_ = nullptr;
+    dWorldID world_;
+    OdePlasticJoints joints_;
     dSpaceID space_ = nullptr;
     dJointGroupID contacts_ = nullptr;
     std::vector<dBodyID> bodies_;  // nullptr for static bodies
-    std::vector<std::unique_ptr<OdePlasticJoint>> joints_;
-    std::set<std::pair<dBodyID, dBodyID>> joined_;
     std::set<dBodyID> structure_;
     std::size_t steps_ = 0;
     double time_ = 0.0;

@@ -1,9 +1,9 @@
 #include "plascap/adapters/bullet_plastic_joint.hpp"
 
 #include <cmath>
+#include <utility>
 
 #include "bullet_six_dof_rows.hpp"
-#include "plascap/adapters/row_effective_mass.hpp"
 
 namespace plascap {
 namespace {
@@ -29,24 +29,23 @@ template <class Constraint>
 BasicBulletPlasticJoint<Constraint>::BasicBulletPlasticJoint(btRigidBody* a, btRigidBody& b,
                                                              const btTransform& frame_in_world,
                                                              const PlasticJointSettings& settings)
-    : a_(a), b_(b), law_(settings) {
+    : a_(a), b_(b), driver_(settings) {
     bullet_rows::emplace(constraint_, a, b, frame_in_world);
-    for (Dof dof : kAllDofs) {
-        if (law_.mode(dof) == DofMode::Plastic && settings.laws[index(dof)].stiffness) needs_masses_ = true;
-    }
     constraint_->setJointFeedback(&feedback_);
     constraint_->enableFeedback(true);
     set_up_rows();
 }
 
 template <class Constraint>
-BasicBulletPlasticJoint<Constraint>::~BasicBulletPlasticJoint() = default;
+BasicBulletPlasticJoint<Constraint>::~BasicBulletPlasticJoint() {
+    detach();
+}
 
 template <class Constraint>
 void BasicBulletPlasticJoint<Constraint>::set_up_rows() {
     for (Dof dof : kAllDofs) {
         const int i = static_cast<int>(index(dof));
-        switch (law_.mode(dof)) {
+        switch (driver_.law().mode(dof)) {
             case DofMode::Rigid:
                 constraint_->setLimit(i, 0.0, 0.0);  // lo == hi: locked at the assembled position
                 break;
@@ -55,30 +54,45 @@ void BasicBulletPlasticJoint<Constraint>::set_up_rows() {
                 constraint_->setLimit(i, 1.0, -1.0);  // lo > hi: no limit row; a motor still acts
                 break;
         }
-        bullet_rows::set_motor(*constraint_, i, law_.mode(dof) == DofMode::Plastic, 0.0, 0.0);
+        bullet_rows::set_motor(*constraint_, i, driver_.law().mode(dof) == DofMode::Plastic, 0.0, 0.0);
         constraint_->enableSpring(i, false);  // both constraints: never Bullet's own springs
     }
 }
 
 template <class Constraint>
 void BasicBulletPlasticJoint<Constraint>::attach(btDynamicsWorld& world, double dt, double now) {
-    time_ = now;
     const PerDof<double> x = positions();
-    law_.start(x);
+    driver_.engage(x, now);
     for (Dof dof : kAllDofs) {  // rigid dofs lock where the joint takes hold
         const int i = static_cast<int>(index(dof));
         const double at = is_rotation(dof) ? -x[index(dof)] : x[index(dof)];  // Bullet's angle sign
-        if (law_.mode(dof) == DofMode::Rigid) bullet_rows::lock(*constraint_, i, at);
+        if (driver_.law().mode(dof) == DofMode::Rigid) bullet_rows::lock(*constraint_, i, at);
     }
+    world_ = &world;
     world.addConstraint(&*constraint_, /*disableCollisionsBetweenLinkedBodies=*/true);
+    constraint_in_world_ = true;
     world.addAction(this);
     plan(dt, x);
 }
 
 template <class Constraint>
-void BasicBulletPlasticJoint<Constraint>::detach(btDynamicsWorld& world) {
-    world.removeAction(this);
-    world.removeConstraint(&*constraint_);
+void BasicBulletPlasticJoint<Constraint>::leave_world() {
+    if (world_ && constraint_in_world_) world_->removeConstraint(&*constraint_);
+    constraint_in_world_ = false;
+}
+
+template <class Constraint>
+void BasicBulletPlasticJoint<Constraint>::detach() {
+    if (!world_) return;
+    world_->removeAction(this);
+    leave_world();
+    world_ = nullptr;
+}
+
+template <class Constraint>
+void BasicBulletPlasticJoint<Constraint>::wake() {
+    b_.activate(true);
+    if (a_) a_->activate(true);
 }
 
 template <class Constraint>
@@ -105,17 +119,11 @@ JointAxesInWorld BasicBulletPlasticJoint<Constraint>::axes_in_world() const {
 }
 
 template <class Constraint>
-PerDof<double> BasicBulletPlasticJoint<Constraint>::effective_masses(const JointAxesInWorld& axes) const {
-    if (!needs_masses_) return {};  // only springs need them (eq. 3.2)
-    return row_effective_masses(axes, inertia_of(b_),
-                                a_ ? std::optional<BodyInertia>(inertia_of(*a_)) : std::nullopt);
-}
-
-template <class Constraint>
 void BasicBulletPlasticJoint<Constraint>::plan(double dt, const PerDof<double>& x) {
-    planned_axes_ = axes_in_world();
-    planned_centre_of_b_ = to_vec3(b_.getCenterOfMassPosition());
-    apply(law_.plan(x, dt, effective_masses(planned_axes_)));
+    const JointFrameState state{x, axes_in_world()};
+    apply(driver_.plan(state, to_vec3(b_.getCenterOfMassPosition()), dt, [&] {
+        return std::pair{inertia_of(b_), a_ ? std::optional<BodyInertia>(inertia_of(*a_)) : std::nullopt};
+    }));
 }
 
 template <class Constraint>
@@ -136,14 +144,20 @@ void BasicBulletPlasticJoint<Constraint>::apply(const PerDof<std::optional<RowCo
 
 template <class Constraint>
 void BasicBulletPlasticJoint<Constraint>::updateAction(btCollisionWorld*, btScalar dt) {
-    time_ += dt;
-    if (law_.broken()) return;
-    const WorldLoad load{to_vec3(feedback_.m_appliedForceBodyB), to_vec3(feedback_.m_appliedTorqueBodyB)};
-    forces_ = joint_frame_loads(load, planned_centre_of_b_, planned_axes_);
-    const PerDof<double> x = positions();  // the end of this step is the start of the next
-    if (law_.settle(x, forces_, time_)) {
-        constraint_->setEnabled(false);  // broken stays broken: nothing re-enables it
+    if (driver_.broken()) {
+        driver_.settle({}, {}, dt);  // keeps the clock
         return;
+    }
+    const WorldLoad load{to_vec3(feedback_.m_appliedForceBodyB), to_vec3(feedback_.m_appliedTorqueBodyB)};
+    const PerDof<double> x = positions();  // the end of this step is the start of the next
+    switch (driver_.settle(load, x, dt)) {
+        case JointEvent::Broke:
+            wake();
+            constraint_->setEnabled(false);  // broken stays broken: nothing re-enables it
+            leave_world();                   // and its bodies collide again
+            return;
+        case JointEvent::Yielded: wake(); break;
+        case JointEvent::None: break;
     }
     plan(dt, x);
 }

@@ -74,13 +74,13 @@ void add(WorldLoad& load, const dJointFeedback& fb) {
 
 OdePlasticJoint::OdePlasticJoint(dWorldID world, dBodyID a, dBodyID b, const Pose& frame_in_world,
                                  const PlasticJointSettings& settings)
-    : world_(world), a_(a), b_(b), law_(settings) {
+    : world_(world), a_(a), b_(b), driver_(settings) {
     frame_on_a_ = a ? relative(pose_of(a), frame_in_world) : frame_in_world;
     frame_on_b_ = relative(pose_of(b), frame_in_world);
     bool any_rotation_row = false;
+    const PlasticJointLaw& law = driver_.law();
     for (Dof dof : kAllDofs) {
-        if (law_.mode(dof) == DofMode::Plastic && settings.laws[index(dof)].stiffness) needs_masses_ = true;
-        if (is_rotation(dof) && law_.mode(dof) != DofMode::Free) any_rotation_row = true;
+        if (is_rotation(dof) && law.mode(dof) != DofMode::Free) any_rotation_row = true;
     }
     if (any_rotation_row) {
         rotations_ = dJointCreateAMotor(world_, nullptr);
@@ -90,7 +90,7 @@ OdePlasticJoint::OdePlasticJoint(dWorldID world, dBodyID a, dBodyID b, const Pos
         dJointSetFeedback(rotations_, &rotation_feedback_);
     }
     translations_ = dJointGroupCreate(0);
-    if (law_.mode(Dof::Qx) == DofMode::Rigid && law_.mode(Dof::N) == DofMode::Rigid && law_.mode(Dof::Qz) == DofMode::Rigid) {
+    if (law.mode(Dof::Qx) == DofMode::Rigid && law.mode(Dof::N) == DofMode::Rigid && law.mode(Dof::Qz) == DofMode::Rigid) {
         ball_ = dJointCreateBall(world_, nullptr);
         dJointAttach(ball_, b_, a_);
         dJointSetBallAnchor(ball_, frame_in_world.origin[0], frame_in_world.origin[1], frame_in_world.origin[2]);
@@ -105,13 +105,11 @@ OdePlasticJoint::~OdePlasticJoint() {
 }
 
 void OdePlasticJoint::engage(double now) {
-    time_ = now;
     if (ball_) {  // hold the anchor where it is now
         const JointFrameState state = measure();
         dJointSetBallAnchor(ball_, state.axes.anchor[0], state.axes.anchor[1], state.axes.anchor[2]);
     }
-    reference_ = measure().positions;
-    law_.start(reference_);
+    driver_.engage(measure().positions, now);
 }
 
 JointFrameState OdePlasticJoint::measure() const {
@@ -119,19 +117,15 @@ JointFrameState OdePlasticJoint::measure() const {
     return measure_joint(on_a, compose(pose_of(b_), frame_on_b_));
 }
 
-PerDof<double> OdePlasticJoint::effective_masses(const JointAxesInWorld& axes) const {
-    if (!needs_masses_) return {};
-    return row_effective_masses(axes, inertia_of(b_), a_ ? std::optional<BodyInertia>(inertia_of(a_)) : std::nullopt);
-}
-
 void OdePlasticJoint::before_step(double dt) {
-    if (law_.broken()) return;
+    if (driver_.broken()) return;
     const JointFrameState state = measured_ ? *measured_ : measure();  // the end of a step is the start of the next
     measured_.reset();
-    planned_axes_ = state.axes;
     const dReal* centre = dBodyGetPosition(b_);
-    planned_centre_of_b_ = {centre[0], centre[1], centre[2]};
-    const PerDof<std::optional<RowCommand>> commands = law_.plan(state.positions, dt, effective_masses(state.axes));
+    const PerDof<std::optional<RowCommand>> commands =
+        driver_.plan(state, {centre[0], centre[1], centre[2]}, dt, [&] {
+            return std::pair{inertia_of(b_), a_ ? std::optional<BodyInertia>(inertia_of(a_)) : std::nullopt};
+        });
     set_rotation_rows(state, commands, dt);
     set_translation_rows(state, commands, dt);
 }
@@ -146,7 +140,8 @@ void OdePlasticJoint::set_rotation_rows(const JointFrameState& state, const PerD
         dJointSetAMotorAxis(rotations_, i, 0, axis[0], axis[1], axis[2]);  // rel 0: world axes
         const std::size_t dof = 3 + static_cast<std::size_t>(i);
         const RowSetting row =
-            row_setting(law_.mode(kAllDofs[dof]), commands[dof], state.positions[dof], reference_[dof], dt);
+            row_setting(driver_.law().mode(kAllDofs[dof]), commands[dof], state.positions[dof],
+                        driver_.engaged_positions()[dof], dt);
         dJointSetAMotorParam(rotations_, kVel[i], row.velocity);
         dJointSetAMotorParam(rotations_, kFMax[i], row.bound);
     }
@@ -159,7 +154,8 @@ void OdePlasticJoint::set_translation_rows(const JointFrameState& state,
     translation_joints_ = 0;
     std::array<RowSetting, 3> rows;
     for (std::size_t i = 0; i < 3; ++i) {
-        rows[i] = row_setting(law_.mode(kAllDofs[i]), commands[i], state.positions[i], reference_[i], dt);
+        rows[i] = row_setting(driver_.law().mode(kAllDofs[i]), commands[i], state.positions[i],
+                              driver_.engaged_positions()[i], dt);
     }
     // Contact 1: normal along z, rows along x (fdir1) and y (= z × x); contact 2: normal along x,
     // a row along z.
@@ -196,16 +192,29 @@ void OdePlasticJoint::disable_rows() {
     translation_joints_ = 0;
 }
 
+void OdePlasticJoint::wake() {
+    dBodyEnable(b_);
+    if (a_) dBodyEnable(a_);
+}
+
 void OdePlasticJoint::after_step(double dt) {
-    time_ += dt;
-    if (law_.broken()) return;
+    if (driver_.broken()) {
+        driver_.settle({}, {}, dt);  // keeps the clock
+        return;
+    }
     WorldLoad load;
     if (rotations_) add(load, rotation_feedback_);
     if (ball_) add(load, ball_feedback_);
     for (int i = 0; i < translation_joints_; ++i) add(load, translation_feedback_[i]);
-    forces_ = joint_frame_loads(load, planned_centre_of_b_, planned_axes_);
     measured_ = measure();
-    if (law_.settle(measured_->positions, forces_, time_)) disable_rows();  // broken stays broken
+    switch (driver_.settle(load, measured_->positions, dt)) {
+        case JointEvent::Broke:
+            wake();
+            disable_rows();  // broken stays broken
+            break;
+        case JointEvent::Yielded: wake(); break;
+        case JointEvent::None: break;
+    }
 }
 
 }  // namespace plascap

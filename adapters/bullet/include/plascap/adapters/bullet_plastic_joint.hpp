@@ -5,14 +5,15 @@
 // btGeneric6DofSpringConstraint; they differ only in how a motor is set (bullet_six_dof_rows.hpp). Per dof: free (no row), rigid (a locked limit row) or plastic
 // (a motor row: Hold = target velocity 0 bounded by the capacity; Push = exactly the capped spring
 // force). After every step, as a btActionInterface, it reads the joint feedback (world frame, torque
-// about b's centre of mass), turns it into joint-frame dof forces, settles the law, plans the next
-// step's rows, and disables the constraint when the joint breaks.
+// about b's centre of mass) and hands it to the engine-neutral PlasticJointDriver, which settles the
+// law and plans the next step's rows. A joint that yields or breaks wakes its bodies (a slow plastic
+// flow is never frozen by Bullet's sleeping); a broken joint leaves the world, so its bodies collide
+// again, and calls the break callback. Destroying an attached joint detaches it.
 #include <btBulletDynamicsCommon.h>
 
 #include <optional>
 
-#include "plascap/adapters/joint_loads.hpp"
-#include "plascap/adapters/plastic_joint_law.hpp"
+#include "plascap/adapters/plastic_joint_driver.hpp"
 
 namespace plascap {
 
@@ -27,28 +28,33 @@ public:
     BasicBulletPlasticJoint(const BasicBulletPlasticJoint&) = delete;
     BasicBulletPlasticJoint& operator=(const BasicBulletPlasticJoint&) = delete;
 
-    // Adds the constraint (collisions between a and b disabled) and this action to `world` and
-    // plans the first step of length dt; `now` is the world's time [s], for broken_at. Call once.
+    // Adds the constraint (collisions between a and b disabled while it holds) and this action to
+    // `world` and plans the first step of length dt; `now` is the world's time [s], for broken_at.
+    // Call once; the joint's positions now are its unloaded state.
     void attach(btDynamicsWorld& world, double dt, double now = 0.0);
-    void detach(btDynamicsWorld& world);
+    // Takes the joint out of its world (the destructor does it too). Harmless if not attached.
+    void detach();
+    // Called once when the joint breaks (from inside the world's step).
+    void on_break(BreakCallback callback) { driver_.on_break(std::move(callback)); }
 
     void updateAction(btCollisionWorld* world, btScalar dt) override;
     void debugDraw(btIDebugDraw*) override {}
 
-    const PlasticJointLaw& law() const { return law_; }
+    const PlasticJointLaw& law() const { return driver_.law(); }
     Constraint& constraint() { return *constraint_; }
     // Dof positions now: b relative to a in the joint frame [m, rad].
     PerDof<double> positions();
     // The generalised forces the rows applied to b during the last step [N, N·m].
-    const PerDof<double>& forces() const { return forces_; }
-    double time() const { return time_; }
+    const PerDof<double>& forces() const { return driver_.forces(); }
+    double time() const { return driver_.time(); }
 
 private:
     void set_up_rows();
     void plan(double dt, const PerDof<double>& positions);
     void apply(const PerDof<std::optional<RowCommand>>& commands);
     JointAxesInWorld axes_in_world() const;
-    PerDof<double> effective_masses(const JointAxesInWorld& axes) const;
+    void wake();
+    void leave_world();
 
     btRigidBody* a_;
     btRigidBody& b_;
@@ -56,12 +62,9 @@ private:
     // layout measurably slows that scan (bench_bullet_joints).
     std::optional<Constraint> constraint_;
     btJointFeedback feedback_{};
-    PlasticJointLaw law_;
-    JointAxesInWorld planned_axes_{};
-    Vec3 planned_centre_of_b_{};
-    PerDof<double> forces_{};
-    bool needs_masses_ = false;
-    double time_ = 0.0;
+    PlasticJointDriver driver_;
+    btDynamicsWorld* world_ = nullptr;  // while attached
+    bool constraint_in_world_ = false;  // until it breaks
 };
 
 extern template class BasicBulletPlasticJoint<btGeneric6DofSpring2Constraint>;

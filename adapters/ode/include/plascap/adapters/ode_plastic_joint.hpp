@@ -10,18 +10,22 @@
 //     three translations are rigid, one ball-and-socket joint at the anchor does it more cheaply.
 // Rigid dofs are rows with unbounded force and a Baumgarte target (ERP kHoldCorrection); free dofs
 // get no row. Feedback (dJointFeedback, world frame, torque about b's centre) of all of them is
-// summed and turned into joint-frame dof forces. A broken joint's rows are disabled for good.
+// summed and handed to the engine-neutral PlasticJointDriver, which settles the law and plans the
+// rows. A joint that yields or breaks enables (wakes) its bodies; a broken joint's rows are disabled
+// for good, and it calls its break callback.
 //
-// Use: construct after the bodies; engage(now) when the joint takes hold (its positions then are
+// Use OdePlasticJoints (ode_plastic_joints.hpp): one call per step for every joint of a world. By
+// hand: construct after the bodies; engage(now) when the joint takes hold (its positions then are
 // its unloaded state); then before_step(dt) before each dWorldStep/dWorldQuickStep and
 // after_step(dt) after it.
 #include <ode/ode.h>
 
 #include <array>
 #include <optional>
+#include <utility>
 
 #include "plascap/adapters/joint_frame.hpp"
-#include "plascap/adapters/plastic_joint_law.hpp"
+#include "plascap/adapters/plastic_joint_driver.hpp"
 
 namespace plascap {
 
@@ -37,15 +41,20 @@ public:
     void before_step(double dt);
     void after_step(double dt);
 
-    const PlasticJointLaw& law() const { return law_; }
+    const PlasticJointLaw& law() const { return driver_.law(); }
     PerDof<double> positions() const { return measure().positions; }
-    const PerDof<double>& forces() const { return forces_; }
-    double time() const { return time_; }
+    const PerDof<double>& forces() const { return driver_.forces(); }
+    double time() const { return driver_.time(); }
     void engage(double now);
+    bool engaged() const { return driver_.engaged(); }
+    // Called once when the joint breaks (from after_step).
+    void on_break(BreakCallback callback) { driver_.on_break(std::move(callback)); }
+    dBodyID body_a() const { return a_; }
+    dBodyID body_b() const { return b_; }
 
 private:
     JointFrameState measure() const;
-    PerDof<double> effective_masses(const JointAxesInWorld& axes) const;
+    void wake();
     void set_rotation_rows(const JointFrameState& state, const PerDof<std::optional<RowCommand>>& commands, double dt);
     void set_translation_rows(const JointFrameState& state, const PerDof<std::optional<RowCommand>>& commands, double dt);
     void disable_rows();
@@ -60,14 +69,8 @@ private:
     dJointFeedback rotation_feedback_{};
     std::array<dJointFeedback, 2> translation_feedback_{};
     int translation_joints_ = 0;
-    PlasticJointLaw law_;
-    bool needs_masses_ = false;
-    JointAxesInWorld planned_axes_{};
-    Vec3 planned_centre_of_b_{};
-    PerDof<double> forces_{};
-    PerDof<double> reference_{};  // positions when it took hold: where rigid dofs are held
+    PlasticJointDriver driver_;
     std::optional<JointFrameState> measured_;  // after_step's state: the next before_step's start
-    double time_ = 0.0;
 };
 
 }  // namespace plascap

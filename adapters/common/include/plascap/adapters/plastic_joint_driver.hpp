@@ -1,0 +1,86 @@
+#pragma once
+// One plastic joint's step cycle, the same in every engine: when it takes hold, plan the rows of the
+// next step from where the joint is, read back what the rows applied, settle the law, and report
+// what the step did (yielded, broke) — once, to whoever listens. An engine adapter only measures the
+// joint, sets its rows and acts on the report (wake the bodies, disable the rows); everything else
+// lives here, so Bullet and ODE cannot drift apart.
+#include <functional>
+#include <optional>
+#include <utility>
+
+#include "plascap/adapters/joint_frame.hpp"
+#include "plascap/adapters/joint_loads.hpp"
+#include "plascap/adapters/plastic_joint_law.hpp"
+#include "plascap/adapters/row_effective_mass.hpp"
+
+namespace plascap {
+
+// What one step did to a joint.
+enum class JointEvent {
+    None,     // held (or stayed elastic)
+    Yielded,  // a dof flowed: plastic deformation grew
+    Broke,    // it passed a breaking limit; its rows are gone for good
+};
+
+struct JointBreak {
+    double time = 0.0;                  // the end of the step it broke in [s]
+    double plastic_displacement = 0.0;  // accumulated then [m]
+    double plastic_rotation = 0.0;      // [rad]
+    double dissipated = 0.0;            // [J]
+};
+
+using BreakCallback = std::function<void(const JointBreak&)>;
+
+class PlasticJointDriver {
+public:
+    explicit PlasticJointDriver(const PlasticJointSettings& settings);
+
+    // The joint takes hold at `now` [s]; `positions` (as measured) are its unloaded state, and where
+    // its rigid dofs are held.
+    void engage(const PerDof<double>& positions, double now);
+    bool engaged() const { return engaged_; }
+    const PerDof<double>& engaged_positions() const { return engaged_positions_; }
+
+    // The row commands of the next step of dt, from the joint as measured at its start and b's
+    // centre of mass then (the feedback's torque is about it). `inertias()` → {b, a (nullopt: the
+    // world)} is called only when a spring needs the rows' effective masses (eq. 3.2).
+    template <class Inertias>
+    PerDof<std::optional<RowCommand>> plan(const JointFrameState& state, const Vec3& centre_of_b, double dt,
+                                           Inertias&& inertias) {
+        PerDof<double> masses{};
+        if (needs_masses_) {
+            const std::pair<BodyInertia, std::optional<BodyInertia>> bodies = inertias();
+            masses = row_effective_masses(state.axes, bodies.first, bodies.second);
+        }
+        return plan_with_masses(state, centre_of_b, dt, masses);
+    }
+
+    // After the step: what the rows applied to b (world frame, torque about b's centre of mass as it
+    // was planned) and the dof positions now. A broken joint reports None ever after.
+    JointEvent settle(const WorldLoad& on_b, const PerDof<double>& positions, double dt);
+
+    // Called once, from settle(), when the joint breaks.
+    void on_break(BreakCallback callback) { on_break_ = std::move(callback); }
+
+    const PlasticJointLaw& law() const { return law_; }
+    bool broken() const { return law_.broken(); }
+    // The generalised forces the rows applied to b during the last step [N, N·m].
+    const PerDof<double>& forces() const { return forces_; }
+    double time() const { return time_; }
+
+private:
+    PerDof<std::optional<RowCommand>> plan_with_masses(const JointFrameState& state, const Vec3& centre_of_b, double dt,
+                                                       const PerDof<double>& effective_masses);
+
+    PlasticJointLaw law_;
+    bool needs_masses_ = false;
+    bool engaged_ = false;
+    PerDof<double> engaged_positions_{};
+    JointAxesInWorld planned_axes_{};
+    Vec3 planned_centre_of_b_{};
+    PerDof<double> forces_{};
+    double time_ = 0.0;
+    BreakCallback on_break_;
+};
+
+}  // namespace plascap

@@ -1,0 +1,59 @@
+#pragma once
+// Every plastic joint of one ODE world, stepped with it in one call, so a user cannot forget a step
+// of the cycle: step(dt) engages the joints whose time has come, plans every joint's rows, steps the
+// world (dWorldQuickStep or dWorldStep), and settles every joint. It owns its joints.
+//
+// Collisions stay the caller's (ODE has no built-in contact handling): collide and create contact
+// joints before step(), empty their group after it, and skip pairs for which joined(a, b) is true —
+// bodies held by a plastic joint do not collide, as in Bullet; once the joint breaks they do again.
+#include <ode/ode.h>
+
+#include <memory>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "plascap/adapters/ode_plastic_joint.hpp"
+
+namespace plascap {
+
+class OdePlasticJoints {
+public:
+    enum class Stepper {
+        Quick,  // dWorldQuickStep: iterative, O(rows)
+        Exact,  // dWorldStep: the direct LCP solver, O(rows³)
+    };
+
+    explicit OdePlasticJoints(dWorldID world) : world_(world) {}
+
+    // A joint between a (nullptr: the world) and b whose frame is `frame_in_world` now (origin = the
+    // anchor, columns = the joint's x, y (beam axis), z). It takes hold at the first step that starts
+    // at or after `takes_hold_at` [s] (by default the next one); its positions then are its unloaded
+    // state.
+    OdePlasticJoint& add(dBodyID a, dBodyID b, const Pose& frame_in_world, const PlasticJointSettings& settings,
+                         double takes_hold_at = 0.0);
+
+    // One step of dt [s] for the world and every joint in it.
+    void step(double dt, Stepper stepper = Stepper::Quick);
+
+    // Whether an intact plastic joint joins a and b (in either order): such pairs do not collide.
+    bool joined(dBodyID a, dBodyID b) const;
+
+    double time() const { return time_; }  // [s], the sum of the steps taken
+    std::size_t size() const { return joints_.size(); }
+    OdePlasticJoint& operator[](std::size_t i) { return *joints_[i].joint; }
+    const OdePlasticJoint& operator[](std::size_t i) const { return *joints_[i].joint; }
+
+private:
+    struct Entry {
+        std::unique_ptr<OdePlasticJoint> joint;
+        double takes_hold_at;
+    };
+
+    dWorldID world_;
+    std::vector<Entry> joints_;
+    std::multiset<std::pair<dBodyID, dBodyID>> joined_;  // intact joints' body pairs, ordered
+    double time_ = 0.0;
+};
+
+}  // namespace plascap

@@ -1,0 +1,215 @@
+// A plastic joint's lifecycle, as a library user meets it (docs/adapters.md, "Lifecycle"): the
+// engine-neutral driver reports each step's event once; a Bullet joint leaves its world when
+// destroyed; ODE's joints step in one call; joined bodies do not collide until their joint breaks;
+// the break callback fires once; and a joint that yields keeps its bodies awake, so that a slow
+// plastic flow is not frozen by the engines' sleeping.
+//
+// The reference motion is the rigid-plastic oscillator of docs/references.md: a block of mass m
+// hanging on a joint whose axial dof flows at capacity F < m·g falls at a = g − F/m, so after n steps
+// of h (semi-implicit Euler, as both engines integrate) it has dropped a·h²·n(n+1)/2.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "plascap/adapters/plastic_joint_driver.hpp"
+
+#ifdef PLASCAP_HAVE_BULLET
+#include "plascap/adapters/bullet_plastic_joint.hpp"
+#include "plascap/adapters/bullet_world.hpp"
+#endif
+#ifdef PLASCAP_HAVE_ODE
+#include "plascap/adapters/ode_plastic_joints.hpp"
+#endif
+
+namespace plascap {
+namespace {
+
+constexpr double kG = 10.0, kMass = 3.0, kDt = 0.01;
+
+// The axial dof plastic at capacity F (no stiffness), every other dof rigid.
+PlasticJointSettings axial(double F, double max_plastic_displacement = INFINITY) {
+    PlasticJointSettings s;
+    s.modes.fill(DofMode::Rigid);
+    s.modes[index(Dof::N)] = DofMode::Plastic;
+    s.laws[index(Dof::N)] = {F, F, std::nullopt};
+    s.max_plastic_displacement = max_plastic_displacement;
+    return s;
+}
+
+double drop_after(int steps, double F) {
+    return 0.5 * (kG - F / kMass) * kDt * kDt * steps * (steps + 1);
+}
+
+// The driver without an engine: a row at its bound with motion is flow (Yielded), a row below it
+// is not (None); past the limit it breaks once (Broke, the callback once), and then reports None.
+TEST(JointDriver, ReportsEachStepsEventOnceAndBreaksOnce) {
+    PlasticJointDriver driver(axial(10.0, 0.02));
+    int breaks = 0;
+    JointBreak seen;
+    driver.on_break([&](const JointBreak& b) {
+        ++breaks;
+        seen = b;
+    });
+    PerDof<double> x{};
+    driver.engage(x, 0.0);
+    JointFrameState state;
+    state.axes.translation = {Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1}};
+    state.axes.rotation = state.axes.translation;
+    const auto plan = [&] { driver.plan(state, {0, 0, 0}, kDt, [] { return std::pair{BodyInertia{}, std::optional<BodyInertia>{}}; }); };
+    // The row's force on b along y (the feedback), and where the step left the dof.
+    const auto step = [&](double force, double to) {
+        plan();
+        x[index(Dof::N)] = to;
+        state.positions = x;
+        return driver.settle({{0, force, 0}, {0, 0, 0}}, x, kDt);
+    };
+    EXPECT_EQ(step(5.0, 0.0), JointEvent::None);       // half the capacity: holds
+    EXPECT_EQ(step(10.0, -0.01), JointEvent::Yielded);  // at capacity and moving: flows 0.01 m
+    EXPECT_EQ(step(10.0, -0.025), JointEvent::Broke);   // 0.025 m > 0.02 m
+    EXPECT_EQ(step(10.0, -0.04), JointEvent::None);     // broken stays broken, reported once
+    EXPECT_EQ(breaks, 1);
+    EXPECT_NEAR(seen.time, 3 * kDt, 1e-12);
+    EXPECT_NEAR(seen.plastic_displacement, 0.025, 1e-12);
+    EXPECT_NEAR(seen.dissipated, 10.0 * 0.025, 1e-12);  // F·Δx_p
+    EXPECT_NEAR(driver.time(), 4 * kDt, 1e-12);
+}
+
+#ifdef PLASCAP_HAVE_BULLET
+btTransform at(double y) { return btTransform(btQuaternion::getIdentity(), btVector3(0, y, 0)); }
+
+TEST(BulletLifecycle, DestroyingAnAttachedJointTakesItOutOfTheWorld) {
+    BulletWorld world(btVector3(0, -kG, 0), 10);
+    BulletBox block(btVector3(0.1, 0.1, 0.1), kMass, at(-0.5));
+    world.world().addRigidBody(&block.body());
+    {
+        BulletPlasticJoint joint(nullptr, block.body(), btTransform::getIdentity(), axial(18.0));
+        joint.attach(world.world(), kDt);
+        EXPECT_EQ(world.world().getNumConstraints(), 1);
+        for (int i = 0; i < 10; ++i) world.step(kDt);
+    }
+    EXPECT_EQ(world.world().getNumConstraints(), 0);
+    // Its action is gone too: stepping on must not call into the destroyed joint (ASan would say),
+    // and the block falls freely: its speed grows by g·h a step.
+    const double v = block.body().getLinearVelocity().y();
+    for (int i = 0; i < 10; ++i) world.step(kDt);
+    EXPECT_NEAR(block.body().getLinearVelocity().y(), v - kG * 10 * kDt, 1e-9);
+    world.world().removeRigidBody(&block.body());
+}
+
+// The block hangs from a static body on a joint that breaks after 0.05 m of flow.
+TEST(BulletLifecycle, ABrokenJointCallsBackOnceAndItsBodiesCollideAgain) {
+    BulletWorld world(btVector3(0, -kG, 0), 10);
+    BulletBox ceiling(btVector3(1, 0.1, 1), 0.0, at(0.1));
+    BulletBox block(btVector3(0.1, 0.1, 0.1), kMass, at(-0.5));
+    world.world().addRigidBody(&ceiling.body());
+    world.world().addRigidBody(&block.body());
+    BulletPlasticJoint joint(&ceiling.body(), block.body(), btTransform::getIdentity(), axial(18.0, 0.05));
+    std::vector<double> breaks;
+    joint.on_break([&](const JointBreak& b) { breaks.push_back(b.time); });
+    joint.attach(world.world(), kDt);
+    EXPECT_FALSE(block.body().checkCollideWith(&ceiling.body()));  // joined: no contacts
+    for (int i = 0; i < 40; ++i) world.step(kDt);
+    ASSERT_EQ(breaks.size(), 1u);
+    EXPECT_DOUBLE_EQ(breaks[0], *joint.law().broken_at());
+    // 0.05 m of flow at 4 m/s² takes 16 steps (a·h²·n(n+1)/2 first exceeds 0.05 m at n = 16).
+    EXPECT_NEAR(breaks[0], 16 * kDt, 1e-9);
+    EXPECT_EQ(world.world().getNumConstraints(), 0);
+    EXPECT_TRUE(block.body().checkCollideWith(&ceiling.body()));  // broken: they collide again
+    world.world().removeRigidBody(&block.body());
+    world.world().removeRigidBody(&ceiling.body());
+}
+
+// F just below m·g: the block creeps down at a = g/600, far below Bullet's sleeping speed
+// (0.8 m/s), so its island would fall asleep after 2 s and freeze the flow; the yielding joint keeps
+// it awake, and the drop follows the oscillator's.
+TEST(BulletLifecycle, AYieldingJointKeepsItsBodiesAwake) {
+    const double F = kMass * kG * (1 - 1.0 / 600);
+    BulletWorld world(btVector3(0, -kG, 0), 10);
+    BulletBox block(btVector3(0.1, 0.1, 0.1), kMass, at(-0.5));
+    block.body().forceActivationState(ACTIVE_TAG);  // this body may sleep
+    world.world().addRigidBody(&block.body());
+    BulletPlasticJoint joint(nullptr, block.body(), btTransform::getIdentity(), axial(F));
+    joint.attach(world.world(), kDt);
+    const int steps = 500;  // 5 s
+    for (int i = 0; i < steps; ++i) world.step(kDt);
+    EXPECT_TRUE(block.body().isActive());
+    EXPECT_NEAR(-0.5 - block.body().getCenterOfMassPosition().y(), drop_after(steps, F), 1e-6 * drop_after(steps, F));
+    world.world().removeRigidBody(&block.body());
+}
+#endif
+
+#ifdef PLASCAP_HAVE_ODE
+struct OdeWorld {
+    OdeWorld() {
+        dInitODE2(0);
+        world = dWorldCreate();
+        dWorldSetGravity(world, 0, -kG, 0);
+    }
+    ~OdeWorld() { dWorldDestroy(world); }
+    dBodyID box(double y) {
+        dBodyID b = dBodyCreate(world);
+        dMass m;
+        dMassSetBoxTotal(&m, kMass, 0.2, 0.2, 0.2);
+        dBodySetMass(b, &m);
+        dBodySetPosition(b, 0, y, 0);
+        return b;
+    }
+    dWorldID world;
+};
+
+// One call per step: the joint takes hold at its time, then the block flows as the oscillator says.
+TEST(OdeLifecycle, OneCallPerStepRunsTheWholeCycle) {
+    OdeWorld ode;
+    const dBodyID block = ode.box(-0.5);
+    {
+        OdePlasticJoints joints(ode.world);
+        joints.add(nullptr, block, Pose{}, axial(18.0), /*takes_hold_at=*/0.05);
+        for (int i = 0; i < 5; ++i) joints.step(kDt);  // free fall until t = 0.05 s
+        EXPECT_FALSE(joints[0].engaged());
+        const double y0 = dBodyGetPosition(block)[1], v0 = dBodyGetLinearVel(block)[1];
+        for (int i = 0; i < 30; ++i) joints.step(kDt, OdePlasticJoints::Stepper::Exact);
+        EXPECT_TRUE(joints[0].engaged());
+        // From the speed it had when the joint took hold: y0 + v0·t − drop.
+        const double expected = y0 + v0 * 30 * kDt - drop_after(30, 18.0);
+        EXPECT_NEAR(dBodyGetPosition(block)[1], expected, 1e-9);
+        EXPECT_NEAR(joints.time(), 35 * kDt, 1e-12);
+    }
+}
+
+// Two free bodies (no gravity) pulled apart by their speeds, joined on a joint that breaks after
+// 0.05 m of flow: joined(), then the callback once, then not joined.
+TEST(OdeLifecycle, ABrokenJointCallsBackOnceAndItsBodiesCollideAgain) {
+    OdeWorld ode;
+    dWorldSetGravity(ode.world, 0, 0, 0);
+    const dBodyID a = ode.box(0.5), b = ode.box(-0.5);
+    dBodySetLinearVel(a, 0, 1, 0);
+    dBodySetLinearVel(b, 0, -1, 0);
+    OdePlasticJoints joints(ode.world);
+    int breaks = 0;
+    joints.add(a, b, Pose{}, axial(1.0, 0.05)).on_break([&](const JointBreak&) { ++breaks; });
+    EXPECT_TRUE(joints.joined(a, b));
+    EXPECT_TRUE(joints.joined(b, a));
+    for (int i = 0; i < 100; ++i) joints.step(kDt);
+    EXPECT_EQ(breaks, 1);
+    EXPECT_FALSE(joints.joined(a, b));
+}
+
+// As the Bullet test: ODE's auto-disabling (off by default; on here) would freeze the creeping block
+// within ten steps; the yielding joint keeps enabling it.
+TEST(OdeLifecycle, AYieldingJointKeepsItsBodiesAwake) {
+    const double F = kMass * kG * (1 - 1.0 / 600);
+    OdeWorld ode;
+    dWorldSetAutoDisableFlag(ode.world, 1);
+    const dBodyID block = ode.box(-0.5);
+    OdePlasticJoints joints(ode.world);
+    joints.add(nullptr, block, Pose{}, axial(F));
+    const int steps = 500;
+    for (int i = 0; i < steps; ++i) joints.step(kDt, OdePlasticJoints::Stepper::Exact);
+    EXPECT_TRUE(dBodyIsEnabled(block));
+    EXPECT_NEAR(-0.5 - dBodyGetPosition(block)[1], drop_after(steps, F), 1e-6 * drop_after(steps, F));
+}
+#endif
+
+}  // namespace
+}  // namespace plascap
