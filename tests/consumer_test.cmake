@@ -1,6 +1,6 @@
 # Script mode (cmake -P): install plascap from PLASCAP_BUILD_DIR into WORK_DIR/prefix, configure
-# and build the consumer in CONSUMER_SOURCE_DIR against it (with the Bullet adapter when
-# PLASCAP_EXPECT_BULLET), run it. Any failure fails the test.
+# and build the consumer in CONSUMER_SOURCE_DIR against it (with the Bullet and ODE adapters
+# when PLASCAP_EXPECT_BULLET and PLASCAP_EXPECT_ODE), run it. Any failure fails the test.
 file(REMOVE_RECURSE ${WORK_DIR})
 function(run)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE status)
@@ -17,4 +17,9 @@ if(EXISTS ${WORK_DIR}/build/plascap-consumer-bullet)
   run(${WORK_DIR}/build/plascap-consumer-bullet)
 elseif(PLASCAP_EXPECT_BULLET)
   message(FATAL_ERROR "the installed plascap has its Bullet adapter, but the consumer did not build against it")
+endif()
+if(EXISTS ${WORK_DIR}/build/plascap-consumer-ode)
+  run(${WORK_DIR}/build/plascap-consumer-ode)
+elseif(PLASCAP_EXPECT_ODE)
+  message(FATAL_ERROR "the installed plascap has its ODE adapter, but the consumer did not build against it")
 endif()
