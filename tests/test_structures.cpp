@@ -76,6 +76,50 @@ TEST(Structures, MembersBecomeSegmentsWithTheMembersMassAndInertia) {
     EXPECT_DOUBLE_EQ(s.loads[0].factor(3.0), 1.0);
 }
 
+// A removed member: the joints that hold it to the rest break in the step starting at its time,
+// whatever their load (here far below capacity), its own joints stay, and the node it shared stays
+// with the member that remains (its load and its reported displacement with it).
+TEST(Structures, ARemovedMemberLetsGoOfTheRestAtItsTime) {
+    const std::string json = R"({"dt": 0.01, "duration": 1, "iterations": 50, "gravity": [0, 0, 0],
+        "nodes": {"A": [0, 0, 0], "B": [2, 0, 0], "C": [4, 0, 0]}, "members": [)" +
+                             member("AB", "A", "B", "[0, 1, 0]", 2) + R"(, {"name": "BC", "from": "B", "to": "C", "shape": "IPE 200",
+        "material": "S355", "z_axis": [0, 1, 0], "segments": 2, "removed_at": 0.5}], "supports": {"A": "fixed", "C": "fixed"},
+        "loads": [{"node": "B", "force": [0, -1000, 0]}]})";
+    const Scene scene = parse_scene_json(json);
+    ASSERT_EQ(scene.nodes[1].name, "B");
+    EXPECT_EQ(scene.nodes[1].at.body, 1u);  // AB's second segment, not BC's first
+    for (const std::string& engine : available_engines()) {
+        if (engine == "ode-step") continue;  // dWorldStep: the same rows, solved exactly; not needed here
+        const std::unique_ptr<SceneEngine> e = make_engine(engine, scene);
+        const SimulationResult r = run_simulation(scene, *e, {});
+        for (std::size_t j = 0; j < scene.joints.size(); ++j) {
+            const std::string& name = scene.joints[j].name;
+            const bool lets_go = name == "node B: AB-BC" || name == "support C";
+            ASSERT_EQ(r.joints[j].broken_at.has_value(), lets_go) << engine << ", " << name;
+            if (lets_go) {
+                EXPECT_NEAR(*r.joints[j].broken_at, 0.51, 1e-9) << engine << ", " << name;  // the end of the step from 0.5 s
+            }
+        }
+        // B stays on the cantilever AB, which carries its 1 kN far below Mp: it hardly moves.
+        EXPECT_LT(std::abs(r.nodes[1][1]), 0.01) << engine;
+    }
+    EXPECT_NE(error_of(R"({"dt": 0.01, "duration": 1, "nodes": {"A": [0, 0, 0], "B": [1, 0, 0]}, "members": [{"name": "m", "from": "A",
+        "to": "B", "shape": "IPE 200", "material": "S355", "removed_at": -1}]})")
+                  .find("members[0] (\"m\").removed_at: must not be negative"), std::string::npos);
+}
+
+// The large example (scripts/multistorey-frame.py): 5 storeys of 4 × 3 bays. Members: 100 columns (4
+// segments), 80 primary beams split at midspan into 160 halves (2 segments), 75 secondary beams (4
+// segments). Joints: 3·100 + 1·160 + 3·75 = 685 inside members, one per further member end at each
+// node (2·335 ends − 200 nodes met = 470), 20 supports: 1,175; bodies 400 + 320 + 300 = 1,020.
+TEST(Structures, TheLargeExampleHasOverAThousandJoints) {
+    const Scene s = read_scene_file(PLASCAP_SOURCE_DIR "/examples/large/multistorey-frame.json");
+    EXPECT_EQ(s.bodies.size(), 1020u);
+    EXPECT_EQ(s.joints.size(), 1175u);
+    const auto severed = std::count_if(s.joints.begin(), s.joints.end(), [](const SceneJoint& j) { return j.severed_at.has_value(); });
+    EXPECT_EQ(severed, 2);  // the removed column's support and its joint at node 1.1.1
+}
+
 TEST(Structures, BadInputNamesTheMemberNodeSupportOrLoad) {
     const std::string nodes = R"("nodes": {"A": [0, 0, 0], "B": [1, 0, 0]}, )";
     const auto scene = [&](const std::string& body) { return R"({"dt": 0.01, "duration": 1, )" + nodes + body + "}"; };

@@ -59,6 +59,7 @@ public:
 
     void step() override {
         for (std::size_t i : schedule_.due(time_)) joints_[i]->attach(world_.world(), scene_.dt, time_);
+        for (std::size_t i : schedule_.severed(time_)) joints_[i]->sever();
         world_.step(scene_.dt);
         ++steps_;
         time_ = static_cast<double>(steps_) * scene_.dt;

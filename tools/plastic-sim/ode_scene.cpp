@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "joint_schedule.hpp"
 #include "plascap/adapters/ode_plastic_joints.hpp"
 #include "scene_engine.hpp"
 
@@ -56,7 +57,8 @@ struct OdeLibrary {
 
 class OdeScene : public SceneEngine {
 public:
-    OdeScene(const Scene& scene, bool quick) : scene_(scene), quick_(quick), world_(new_world()), joints_(world_) {
+    OdeScene(const Scene& scene, bool quick)
+        : scene_(scene), quick_(quick), schedule_(scene), world_(new_world()), joints_(world_) {
         dWorldSetGravity(world_, scene.gravity[0], scene.gravity[1], scene.gravity[2]);
         dWorldSetQuickStepNumIterations(world_, scene.iterations);
         space_ = dHashSpaceCreate(nullptr);
@@ -85,6 +87,7 @@ public:
     }
 
     void step() override {
+        for (std::size_t i : schedule_.severed(time_)) joints_[i].sever();
         dSpaceCollide(space_, this, &OdeScene::near_callback);
         joints_.step(scene_.dt, quick_ ? OdePlasticJoints::Stepper::Quick : OdePlasticJoints::Stepper::Exact);
         dJointGroupEmpty(contacts_);
@@ -184,6 +187,7 @@ private:
 
     const Scene& scene_;
     bool quick_;
+    JointSchedule schedule_;  // for severing; OdePlasticJoints engages
     dWorldID world_;
     OdePlasticJoints joints_;
     dSpaceID space_ = nullptr;

@@ -62,6 +62,9 @@ struct SceneJoint {
     std::array<Vec3, 3> axes{};  // joint x, y (beam axis), z in world: orthonormal, right-handed
     PlasticJointSettings settings;
     double engage_at = 0.0;  // [s]: the joint joins the world at the step starting nearest this time
+    // [s]: the joint breaks in the step starting nearest this time, whatever its load (a structure's
+    // member "removed_at" then)
+    std::optional<double> severed_at;
 };
 
 struct Scene {

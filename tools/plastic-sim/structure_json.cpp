@@ -58,10 +58,12 @@ struct Member {
     Frame frame;
     int segments = 1;
     double segment_length = 0.0;
+    std::optional<double> removed_at;  // [s]: its joints to the rest of the structure break then
     std::size_t first_body = 0;
     PlasticJointSettings joint;  // between consecutive segments: a beam segment of segment_length
     std::string where;
     std::size_t end_body(bool at_start) const { return first_body + (at_start ? 0 : segments - 1); }
+    bool owns(std::size_t body) const { return body >= first_body && body < first_body + static_cast<std::size_t>(segments); }
     Frame away_from(bool at_start) const { return at_start ? frame : frame.reversed(); }
 };
 
@@ -133,7 +135,7 @@ Member parse_member(const Json& m, const std::string& where_in, const std::map<s
                     const MaterialCatalogue& catalogue, SettingsCache& cache) {
     require_object(m, where_in);
     reject_unknown_keys(m, where_in, {"name", "from", "to", "shape", "section", "material", "z_axis", "segments",
-                                      "yield_surface", "torsion"});
+                                      "yield_surface", "torsion", "removed_at"});
     Member member;
     member.name = text(scene_json::member(m, "name", where_in), where_in + ".name");
     member.where = where_in + " (\"" + member.name + "\")";
@@ -155,6 +157,10 @@ Member parse_member(const Json& m, const std::string& where_in, const std::map<s
         member.segments = 4;
     }
     member.segment_length = length / member.segments;
+    if (m.contains("removed_at")) {
+        member.removed_at = finite_number(m["removed_at"], where + ".removed_at");
+        if (*member.removed_at < 0.0) throw InputError(where + ".removed_at: must not be negative");
+    }
     if (!m.contains("shape") && !m.contains("section")) throw InputError(where + ": a member needs a \"shape\" or a \"section\"");
     if (m.contains("shape") && m.contains("section")) throw InputError(where + ": give one of \"shape\" and \"section\"");
     const ValidSection section = read_joint_section(m, where, catalogue);
@@ -354,7 +360,10 @@ void add_structure(const Json& j, Scene& scene, const MaterialCatalogue& catalog
         ends[m.to].push_back({i, false});
     }
 
-    // Nodes where members meet: each further member end joined to the first one's.
+    // Nodes where members meet: each further member end joined to the first one's. A removed member
+    // is never the first: the node (its loads, its reported displacement) stays with the structure.
+    for (auto& [node, at] : ends)
+        std::stable_partition(at.begin(), at.end(), [&](const MemberEnd& e) { return !parsed[e.member].removed_at; });
     std::map<std::string, BodyPoint> points;
     for (const auto& [node, at] : ends) {
         const Vec3& p = nodes[node];
@@ -380,6 +389,15 @@ void add_structure(const Json& j, Scene& scene, const MaterialCatalogue& catalog
                 throw InputError(where + ": " + (nodes.count(item.key()) ? "no member meets this node" : "no node named \"" + item.key() + "\""));
             const MemberEnd& e = it->second.front();
             scene.joints.push_back(support_joint(item.key(), item.value(), where, parsed[e.member], e.at_start, nodes[item.key()]));
+        }
+    }
+    // A removed member: every joint that holds it to the rest (nodes, supports) is severed then; it
+    // falls as one piece (its own joints stay).
+    for (const Member& m : parsed) {
+        if (!m.removed_at) continue;
+        for (SceneJoint& joint : scene.joints) {
+            const bool a_in = joint.a && m.owns(*joint.a), b_in = m.owns(joint.b);
+            if (a_in != b_in) joint.severed_at = m.removed_at;
         }
     }
     if (j.contains("loads")) {

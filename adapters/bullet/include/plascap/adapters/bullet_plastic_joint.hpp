@@ -34,6 +34,8 @@ public:
     void attach(btDynamicsWorld& world, double dt, double now = 0.0);
     // Takes the joint out of its world (the destructor does it too). Harmless if not attached.
     void detach();
+    // Breaks the joint at the end of the next step, whatever its load (a member removed).
+    void sever() { driver_.sever(); }
     // Called once when the joint breaks (from inside the world's step).
     void on_break(BreakCallback callback) { driver_.on_break(std::move(callback)); }
 

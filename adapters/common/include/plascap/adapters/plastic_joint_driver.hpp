@@ -59,6 +59,10 @@ public:
     // was planned) and the dof positions now. A broken joint reports None ever after.
     JointEvent settle(const WorldLoad& on_b, const PerDof<double>& positions, double dt);
 
+    // The joint breaks at the end of the next step whatever its load (a member removed): settle()
+    // then reports Broke, and the adapter drops its rows as for any break.
+    void sever() { sever_ = true; }
+
     // Called once, from settle(), when the joint breaks.
     void on_break(BreakCallback callback) { on_break_ = std::move(callback); }
 
@@ -81,6 +85,7 @@ private:
     PerDof<double> forces_{};
     double time_ = 0.0;
     BreakCallback on_break_;
+    bool sever_ = false;
 };
 
 }  // namespace plascap

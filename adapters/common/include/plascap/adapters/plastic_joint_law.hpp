@@ -29,6 +29,12 @@ public:
     // further calls: broken stays broken.
     bool settle(const PerDof<double>& positions, const PerDof<double>& forces, double time);
 
+    // Breaks the joint at `time` whatever its deformation (a member removed, a charge fired); no-op
+    // if broken already.
+    void sever(double time) {
+        if (!broken()) broken_at_ = time;
+    }
+
     DofMode mode(Dof dof) const { return settings_.modes[index(dof)]; }
     // The law of a plastic dof; nullptr for free and rigid ones.
     const ElasticPlasticLaw* law(Dof dof) const;

@@ -47,6 +47,8 @@ public:
     double time() const { return driver_.time(); }
     void engage(double now);
     bool engaged() const { return driver_.engaged(); }
+    // Breaks the joint at the end of the next step, whatever its load (a member removed).
+    void sever() { driver_.sever(); }
     // Called once when the joint breaks (from after_step).
     void on_break(BreakCallback callback) { driver_.on_break(std::move(callback)); }
     dBodyID body_a() const { return a_; }
