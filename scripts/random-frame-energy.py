@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Diagnostic, not a test (it fails today; docs/structures.md, "Known limits"): random small frames —
+"""Diagnostic (docs/structures.md, "Known limits"; the property test is tests/test_structure_energy.cpp): random small frames —
 3 to 5 nodes in a box of 4 x 3 x 1 m, a tree of members of random standard shapes (S355) and 1 to 4
 segments, fixed at the first node, gravity and one ramped random force — run on Bullet and ODE; prints
 the energy ledger's remainder as a share of the energy handled, and the dissipated energy. A joint law

@@ -211,6 +211,84 @@ TEST(JointFrame, MeasuresEulerAnglesUpToADegreeFromTheSingularTwist) {
     }
 }
 
+// The pose of b for Euler angles (θx, θy, θz) relative to a = the world (joint_frame.hpp's R = Rz·Ry·Rx).
+Pose euler_pose(double tx, double ty, double tz) {
+    Pose b;
+    b.rotation = product(rotation_z(tz), product(rotation_y(ty), rotation_x(tx)));
+    return b;
+}
+
+// The rotation vector of the small turn from R0 to R1 (world frame): the axial vector of R1·R0ᵀ's
+// antisymmetric part, exact to second order in the turn.
+Vec3 small_turn(const Mat3& r0, const Mat3& r1) {
+    Mat3 d{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            for (int k = 0; k < 3; ++k) d[i][j] += r1[i][k] * r0[j][k];
+    return {0.5 * (d[2][1] - d[1][2]), 0.5 * (d[0][2] - d[2][0]), 0.5 * (d[1][0] - d[0][1])};
+}
+
+// A bending row flowing at capacity C on a hinge twisted by θy = 60°: the work its moment −C·e_x does
+// is Σ −C·e_x·Δφ over the turns Δφ of b (measured here from the poses, not from the law's formula),
+// and the law must book that as dissipated, C·cos θy·Δθx — half of C·Δθx.
+TEST(PlasticJointLaw, ATwistedHingeDissipatesTheWorkItsRowsDo) {
+    PlasticJointSettings s;
+    s.modes.fill(DofMode::Rigid);
+    s.modes[index(Dof::Mx)] = DofMode::Plastic;
+    const double C = 10.0, ty = kPi / 3, tz = 0.2;
+    s.laws[index(Dof::Mx)] = DofLaw{C, C, std::nullopt};
+    PlasticJointLaw joint(s);
+    JointFrameState state = measure_joint(Pose{}, euler_pose(0, ty, tz));
+    joint.start(state.positions);
+    double work = 0.0;
+    for (int k = 1; k <= 100; ++k) {
+        joint.plan(state.positions, 0.01, {});
+        const JointFrameState next = measure_joint(Pose{}, euler_pose(0.001 * k, ty, tz));
+        const Vec3 turn = small_turn(euler_pose(0.001 * (k - 1), ty, tz).rotation, euler_pose(0.001 * k, ty, tz).rotation);
+        const Vec3& e = state.axes.rotation[0];  // the row's axis at the step's start
+        work += C * (e[0] * turn[0] + e[1] * turn[1] + e[2] * turn[2]);  // the resisting moment's work, sign flipped
+        PerDof<double> f{};
+        f[index(Dof::Mx)] = -C;  // at capacity, against the motion
+        joint.settle(next.positions, f, 0.01 * k);
+        state = next;
+    }
+    EXPECT_NEAR(joint.plastic_rotation(), 0.1, 1e-12);
+    EXPECT_NEAR(work, C * 0.1 * std::cos(ty), 1e-4 * work);  // the kinematics: e_x·g_x = cos θy
+    EXPECT_NEAR(joint.dissipated(), work, 1e-4 * work);
+}
+
+// A hinge twisting through 90°: engines report |θy| ≤ 90°, so past it the measured triple jumps to
+// the other branch (θx + π, π − θy, θz + π), and the engine's twist runs backwards. A bending row
+// flowing at capacity 1 mrad a step must accumulate only that motion — not the π jumps — and a
+// twisting row flowing at capacity, its force against the engine's twist rate as a row's is, must
+// dissipate C·|Δθy| (positive work), not book the second half as energy created.
+TEST(PlasticJointLaw, AHingeTwistingThroughNinetyDegreesStaysContinuous) {
+    PlasticJointSettings s;
+    s.modes.fill(DofMode::Free);
+    s.modes[index(Dof::Mx)] = DofMode::Plastic;
+    s.modes[index(Dof::My)] = DofMode::Plastic;
+    s.laws[index(Dof::Mx)] = DofLaw{1.0, 1.0, std::nullopt};
+    s.laws[index(Dof::My)] = DofLaw{2.0, 2.0, std::nullopt};
+    PlasticJointLaw joint(s);
+    const auto measured = [](int k) { return measure_joint(Pose{}, euler_pose(0.2 + 0.001 * k, 1.4 + 0.01 * k, -0.3)).positions; };
+    joint.start(measured(0));
+    bool crossed = false;
+    for (int k = 1; k <= 40; ++k) {  // θy from 1.4 to 1.8 rad
+        joint.plan(measured(k - 1), 0.01, {});
+        const PerDof<double> x = measured(k);
+        crossed = crossed || std::abs(x[index(Dof::Mx)] - 0.2) > 1.0;  // the engine's branch has jumped
+        PerDof<double> f{};
+        f[index(Dof::Mx)] = -1.0;
+        f[index(Dof::My)] = x[index(Dof::My)] > measured(k - 1)[index(Dof::My)] ? -2.0 : 2.0;  // against the engine's rate
+        joint.settle(x, f, 0.01 * k);
+    }
+    EXPECT_TRUE(crossed);
+    EXPECT_NEAR(joint.plastic_rotation(), 0.04 + 0.4, 1e-9);
+    EXPECT_NEAR(joint.law(Dof::Mx)->plastic_offset(), 0.24, 1e-9);  // continuous: 0.2 + 40 mrad
+    EXPECT_NEAR(joint.law(Dof::My)->plastic_offset(), 1.8, 1e-9);
+    EXPECT_NEAR(joint.law(Dof::My)->dissipated(), 2.0 * 0.4, 1e-9);
+}
+
 // Two moving bodies on one row, 1/(J·M⁻¹·Jᵀ) by hand: b (2 kg, I⁻¹ = diag(1, 1/2, 1/3), centre
 // (0, 1, 0)) and a (4 kg, I⁻¹ = diag(1/4), centre (0, −1, 0)), anchor at the origin. The x row:
 // b's lever (0, −1, 0) × x = (0, 0, 1) → 1/2 + 1/3; a's (0, 1, 0) × x = (0, 0, −1) → 1/4 + 1/4;

@@ -77,7 +77,7 @@ void ElasticPlasticLaw::settle_rigid_plastic(double position, double applied_for
     const double step = position - planned_position_;
     plastic_offset_ += step;
     accumulated_ += std::abs(step);
-    dissipated_ += -applied_force * step;
+    dissipated_ += -applied_force * step * work_factor_;
 }
 
 void ElasticPlasticLaw::settle_elastic_plastic(double position) {
@@ -95,14 +95,14 @@ void ElasticPlasticLaw::settle_elastic_plastic(double position) {
     }
     const double step = std::abs(moved_to - plastic_offset_);
     accumulated_ += step;
-    dissipated_ += capacity * step;  // the force stays on the capacity while x_p moves
+    dissipated_ += capacity * step * work_factor_;  // the force stays on the capacity while x_p moves
     plastic_offset_ = moved_to;
 }
 
 void ElasticPlasticLaw::flow(double step, double load) {
     plastic_offset_ += step;
     accumulated_ += std::abs(step);
-    dissipated_ += load * step;  // the joint's resisting force −load does −(−load)·step of work on the flow
+    dissipated_ += load * step * work_factor_;  // the joint's resisting force −load does −(−load)·step of work on the flow
 }
 
 double ElasticPlasticLaw::elastic_energy(double position) const {

@@ -31,17 +31,25 @@ const ElasticPlasticLaw* PlasticJointLaw::law(Dof dof) const {
 }
 
 PerDof<double> PlasticJointLaw::continuous(const PerDof<double>& measured) const {
-    // A rotation dof's measured angle wraps at ±π; the law needs it continuous, or a joint turning
-    // past π books a 2π jump as flow (and its work with the wrong sign).
-    PerDof<double> out = measured;
-    for (Dof dof : kAllDofs) {
-        if (!is_rotation(dof)) continue;
-        const std::size_t i = index(dof);
-        const double turn = 2.0 * std::acos(-1.0);
-        const double step = measured[i] - last_measured_[i];
-        out[i] = last_continuous_[i] + (step - turn * std::round(step / turn));
-    }
-    return out;
+    // A rotation dof's measured angle wraps at ±π, and the Euler triple of R = Rz(θz)·Ry(θy)·Rx(θx)
+    // has a second branch, (θx + π, π − θy, θz + π), the same rotation (e.g. Diebel, "Representing
+    // attitude", 2006, §5.6): engines report |θy| ≤ π/2, so a joint twisting past 90° jumps from one
+    // branch to the other, θx and θz by π. The law needs the angles continuous, or it books each jump
+    // as flow (and its work with the wrong sign): of both branches, each unwrapped by whole turns
+    // against the last continuous angles, take the nearer.
+    const double pi = std::acos(-1.0), turn = 2.0 * pi;
+    const std::size_t x = index(Dof::Mx), y = index(Dof::My), z = index(Dof::Mz);
+    const auto unwrap = [&](double angle, std::size_t i) {
+        const double step = angle - last_continuous_[i];
+        return last_continuous_[i] + (step - turn * std::round(step / turn));
+    };
+    PerDof<double> same = measured, other = measured;
+    same[x] = unwrap(measured[x], x), same[y] = unwrap(measured[y], y), same[z] = unwrap(measured[z], z);
+    other[x] = unwrap(measured[x] + pi, x), other[y] = unwrap(pi - measured[y], y), other[z] = unwrap(measured[z] + pi, z);
+    const auto distance = [&](const PerDof<double>& p) {
+        return std::abs(p[x] - last_continuous_[x]) + std::abs(p[y] - last_continuous_[y]) + std::abs(p[z] - last_continuous_[z]);
+    };
+    return distance(other) < distance(same) ? other : same;
 }
 
 void PlasticJointLaw::track(const PerDof<double>& measured, const PerDof<double>& continuous_positions) {
@@ -57,6 +65,17 @@ void PlasticJointLaw::start(const PerDof<double>& measured) {
     }
 }
 
+namespace {
+
+// On the second Euler branch (continuous θy past ±90°, where cos θy < 0) the My dof runs against
+// the engines' (θy = π − θy,engine), so its row's rate, force and command change sign; Mx and Mz
+// do not (θx = θx,engine + π). Returns −1 there, else 1.
+double twist_sign(const PerDof<double>& continuous_positions) {
+    return std::cos(continuous_positions[index(Dof::My)]) < 0.0 ? -1.0 : 1.0;
+}
+
+}  // namespace
+
 PerDof<std::optional<RowCommand>> PlasticJointLaw::plan(const PerDof<double>& measured, double dt,
                                                         const PerDof<double>& effective_masses) {
     const PerDof<double> positions = continuous(measured);
@@ -69,12 +88,30 @@ PerDof<std::optional<RowCommand>> PlasticJointLaw::plan(const PerDof<double>& me
     for (std::size_t i = 0; i < kDofCount; ++i) {
         if (laws_[i]) commands[i] = laws_[i]->plan(positions[i], dt, effective_masses[i], bounds[i]);
     }
+    if (std::optional<RowCommand>& my = commands[index(Dof::My)]; my && twist_sign(positions) < 0.0) {
+        my->velocity = -my->velocity;
+        my->force = -my->force;
+    }
     return commands;
 }
 
-bool PlasticJointLaw::settle(const PerDof<double>& measured, const PerDof<double>& forces, double time) {
+bool PlasticJointLaw::settle(const PerDof<double>& measured, const PerDof<double>& row_forces, double time) {
     if (broken()) return false;
     const PerDof<double> positions = continuous(measured);
+    PerDof<double> forces = row_forces;
+    forces[index(Dof::My)] *= twist_sign(positions);
+    // The rows' work on the step. Rotation rows act about the Euler row axes e_i (joint_frame.hpp),
+    // the dofs are the Euler angles θ of R = Rz·Ry·Rx, and ω = Σ g_i·θ̇_i with g_x = b's x, g_y = e_y,
+    // g_z = a's z. A row's moment λ_i·e_i does λ_i·(e_i·g_i)·Δθ_i of work (e_j·g_i = 0 for j ≠ i):
+    // e_y·g_y = 1 and e_x·g_x = e_z·g_z = cos θ_y (the generalised force of a Lagrangian in Euler
+    // angles, e.g. Goldstein, Classical Mechanics, §4.9). Booked as λ_i·Δθ_i, a twisted hinge's
+    // bending rows would dissipate 1/cos θ_y too much — energy the ledger then shows as created.
+    // The rows' axes follow the engines' branch (|θy| ≤ π/2, so cos θy ≥ 0), whatever branch the
+    // continuous angles are on.
+    const double twist = 0.5 * (last_measured_[index(Dof::My)] + measured[index(Dof::My)]);
+    for (Dof dof : {Dof::Mx, Dof::Mz}) {
+        if (laws_[index(dof)]) laws_[index(dof)]->set_work_factor(std::cos(twist));
+    }
     track(measured, positions);
     for (std::size_t i = 0; i < kDofCount; ++i) {
         if (laws_[i]) laws_[i]->settle(positions[i], forces[i]);

@@ -52,6 +52,10 @@ public:
     // capped at this dof's own capacities and settle() leaves its return mapping to the joint,
     // which moves the plastic offset through flow().
     void couple() { coupled_ = true; }
+
+    // The work the row does per unit of the dof's motion, per unit of its force, for the next
+    // settle() or flow(): 1 but for Euler-angle rotation rows (plastic_joint_law.cpp).
+    void set_work_factor(double factor) { work_factor_ = factor; }
     // The plastic offset moves by `step` under `load` (the section load, −force on b): the
     // accumulated plastic motion grows by |step| and the dissipated energy by load·step.
     void flow(double step, double load);
@@ -80,6 +84,7 @@ private:
     double last_force_ = 0.0;
     double last_bound_ = 0.0;
     bool coupled_ = false;
+    double work_factor_ = 1.0;
 };
 
 }  // namespace plascap

@@ -1,0 +1,103 @@
+// The energy ledger over random small frames (docs/structures.md, "Energy"): a joint law that never
+// creates energy keeps the ledger's remainder — kinetic + gravitational + elastic + dissipated − work
+// of the loads — at or below zero (the solver's slack only takes energy); here within +2 % of the
+// energy handled. Random trees of 2 to 4 members of standard shapes (S355), 1 to 4 segments each,
+// fixed at the first node, under gravity and one random force (8 to 60 kN, ramped on over 0.3 s), for 0.6 s,
+// on Bullet and ODE.
+//
+// Runs in which a joint comes within 10° of the singular twist, θy = ±90°, are left out and
+// counted: there the rotation rows' Euler axes degenerate (e_x and e_z become parallel; docs/
+// structures.md, "Known limits"). Frames that fold through large rotations away from it are kept:
+// they are where booking a row's work as λ·Δθ instead of λ·cos θy·Δθ created energy.
+// scripts/random-frame-energy.py reports every frame.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <sstream>
+#include <string>
+
+#include "scene.hpp"
+#include "energy_ledger.hpp"
+#include "simulation.hpp"
+
+namespace plascap {
+namespace {
+
+std::string random_frame(std::mt19937& rng) {
+    const auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
+    const auto integer = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+    // No CHS: the Saint-Venant J of a CHS 168.3×8 (for the segments' GJ/ℓ) takes 13 s to mesh and solve.
+    const char* shapes[] = {"IPE 200", "HEB 200", "SHS 200x200x10"};
+    const int n = integer(3, 5);
+    std::ostringstream s;
+    s << R"({"dt": 0.002, "duration": 0.6, "iterations": 100, "gravity": [0, -9.81, 0], "nodes": {)";
+    for (int i = 0; i < n; ++i)
+        s << (i ? ", " : "") << "\"N" << i << "\": [" << uniform(0, 4) << ", " << uniform(0, 3) << ", " << uniform(-0.5, 0.5) << "]";
+    s << R"(}, "members": [)";
+    for (int i = 1; i < n; ++i)
+        s << (i > 1 ? ", " : "") << R"({"name": "m)" << i << R"(", "from": "N)" << integer(0, i - 1) << R"(", "to": "N)" << i
+          << R"(", "shape": ")" << shapes[integer(0, 2)] << R"(", "material": "S355", "segments": )" << integer(1, 4) << "}";
+    // A random direction, and a magnitude from 8 to 60 kN, uniform in its logarithm: from frames that stay
+    // elastic to frames that fold.
+    const double magnitude = 8e3 * std::pow(7.5, uniform(0, 1));
+    double d[3] = {uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)};
+    const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    s << R"(], "supports": {"N0": "fixed"}, "loads": [{"node": "N)" << integer(1, n - 1) << R"(", "force": [)"
+      << magnitude * d[0] / length << ", " << magnitude * d[1] / length << ", " << magnitude * d[2] / length
+      << R"(], "history": [[0, 0], [0.3, 1]]}]})";
+    return s.str();
+}
+
+struct FrameRun {
+    EnergyLedger energy;
+    double closest_to_singular = INFINITY;  // the least |90° − |θy|| any joint reached [rad]
+};
+
+// Steps the scene as plastic-sim does, watching every joint's twist.
+FrameRun run_frame(const Scene& scene, const std::string& engine) {
+    const std::unique_ptr<SceneEngine> e = make_engine(engine, scene);
+    EnergyAccount energy(scene, *e);
+    FrameRun r;
+    for (std::size_t i = 0; i < scene.steps(); ++i) {
+        const std::vector<AppliedLoad> loads = apply_scene_loads(scene, *e);
+        e->step();
+        energy.after_step(*e, loads);
+        for (std::size_t j = 0; j < scene.joints.size(); ++j) {
+            if (!e->joint_law(j)) continue;
+            const double twist = std::abs(e->joint_positions(j)[index(Dof::My)]);
+            r.closest_to_singular = std::min(r.closest_to_singular, std::abs(M_PI / 2 - twist));
+        }
+    }
+    r.energy = energy.ledger();
+    return r;
+}
+
+TEST(StructureEnergy, RandomFramesCreateNoEnergy) {
+    std::mt19937 rng(20261201);
+    int checked = 0, yielded = 0, singular = 0;
+    for (int frame = 0; frame < 16; ++frame) {
+        const std::string json = random_frame(rng);
+        const Scene scene = parse_scene_json(json);
+        for (const char* engine : {"bullet", "ode"}) {
+            const FrameRun r = run_frame(scene, engine);
+            const EnergyLedger& l = r.energy;
+            std::printf("frame %d %s: dissipated %.2f, remainder %+.3f of %.0f J; closest to the singular twist %.1f deg\n", frame,
+                        engine, l.dissipated / l.handled, l.remainder() / l.handled, l.handled, r.closest_to_singular * 180 / M_PI);
+            if (r.closest_to_singular < 10 * M_PI / 180) {
+                ++singular;
+                continue;
+            }
+            ++checked;
+            if (l.dissipated > 0.1 * l.handled) ++yielded;
+            EXPECT_LE(l.remainder(), 0.02 * l.handled) << "frame " << frame << " on " << engine << ": " << json;
+        }
+    }
+    // The property must have been tried where it matters: on frames that yielded substantially.
+    EXPECT_GE(yielded, 6) << checked << " runs checked, " << singular << " near the singular twist left out";
+    std::printf("random frames: %d runs checked (%d yielded, dissipating > 10 %% of the energy), %d near the singular twist left out\n",
+                checked, yielded, singular);
+}
+
+}  // namespace
+}  // namespace plascap
