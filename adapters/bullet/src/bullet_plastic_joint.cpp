@@ -91,8 +91,8 @@ void BasicBulletPlasticJoint<Constraint>::detach() {
 
 template <class Constraint>
 void BasicBulletPlasticJoint<Constraint>::wake() {
-    b_.activate(true);
-    if (a_) a_->activate(true);
+    b_.activate();  // not forced: a static body stays static
+    if (a_) a_->activate();
 }
 
 template <class Constraint>
