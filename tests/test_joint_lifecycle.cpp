@@ -195,6 +195,48 @@ TEST(OdeLifecycle, ABrokenJointCallsBackOnceAndItsBodiesCollideAgain) {
     EXPECT_FALSE(joints.joined(a, b));
 }
 
+// collide(): two overlapping boxes held by a hinge get no contacts while it holds, and do once it
+// breaks. The hinge's translations are rigid (one ball joint, so no contact rows of its own); its Mz
+// flows at 1 N·m and breaks after 0.05 rad while the boxes spin apart about z.
+TEST(OdeLifecycle, CollideSkipsJoinedBodiesUntilTheirJointBreaks) {
+    OdeWorld ode;
+    dWorldSetGravity(ode.world, 0, 0, 0);
+    const dSpaceID space = dSimpleSpaceCreate(nullptr);
+    const dJointGroupID contacts = dJointGroupCreate(0);
+    const dBodyID a = ode.box(0.5), b = ode.box(-0.5);
+    dGeomSetBody(dCreateBox(space, 1.02, 1.02, 1.02), a);  // overlapping by 2 cm
+    dGeomSetBody(dCreateBox(space, 1.02, 1.02, 1.02), b);
+    dBodySetAngularVel(a, 0, 0, 2);
+    dBodySetAngularVel(b, 0, 0, -2);
+    PlasticJointSettings hinge;
+    hinge.modes.fill(DofMode::Rigid);
+    hinge.modes[index(Dof::Mz)] = DofMode::Plastic;
+    hinge.laws[index(Dof::Mz)] = {1.0, 1.0, std::nullopt};
+    hinge.max_plastic_rotation = 0.05;
+    OdePlasticJoints joints(ode.world);
+    joints.add(a, b, Pose{}, hinge);
+    dSurfaceParameters surface{};
+    surface.mode = dContactApprox1;
+    surface.mu = 0.25;
+    const auto contacts_of_a = [&] {
+        int n = 0;
+        for (int i = 0; i < dBodyGetNumJoints(a); ++i) n += dJointGetType(dBodyGetJoint(a, i)) == dJointTypeContact;
+        return n;
+    };
+    int before_break = 0, after_break = 0;
+    for (int i = 0; i < 30; ++i) {
+        joints.collide(space, contacts, surface);
+        (joints[0].law().broken() ? after_break : before_break) += contacts_of_a();
+        joints.step(kDt);
+        dJointGroupEmpty(contacts);
+    }
+    EXPECT_TRUE(joints[0].law().broken());
+    EXPECT_EQ(before_break, 0);
+    EXPECT_GT(after_break, 0);
+    dJointGroupDestroy(contacts);
+    dSpaceDestroy(space);
+}
+
 // As the Bullet test: ODE's auto-disabling (off by default; on here) would freeze the creeping block
 // within ten steps; the yielding joint keeps enabling it.
 TEST(OdeLifecycle, AYieldingJointKeepsItsBodiesAwake) {

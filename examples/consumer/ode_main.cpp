@@ -38,7 +38,7 @@ int main() {
         // The joint frame at the anchor, 0.5 m above the weight: x, y (the bar's axis, up), z as the world's.
         joints.add(nullptr, weight, plascap::Pose{}, settings)  // nullptr: the world
             .on_break([](const plascap::JointBreak& b) { std::printf("broke at %.3f s\n", b.time); });
-        // Collide before each step (skipping pairs for which joints.joined(a, b)); here nothing collides.
+        // Before each step, joints.collide(space, contacts, surface) would skip joined pairs; nothing collides here.
         for (int i = 0; i < steps; ++i) joints.step(dt, plascap::OdePlasticJoints::Stepper::Exact);
         drop = -0.5 - dBodyGetPosition(weight)[1];
         plastic = joints[0].law().plastic_displacement();

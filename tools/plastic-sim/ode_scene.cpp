@@ -1,9 +1,10 @@
 // A Scene in ODE: boxes as dBody + dGeom (static boxes: a geom without a body), joints as
-// OdePlasticJoints, collisions through a hash space with contacts of friction 0.25 and no bounce
-// (Bullet's default: 0.5 per body, multiplied).
+// OdePlasticJoints, collisions through a hash space (OdePlasticJoints::collide: joined bodies skip)
+// with contacts of friction 0.25 and no bounce (Bullet's default: 0.5 per body, multiplied).
 #include <algorithm>
 #include <cstdarg>
 #include <cstdio>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <memory>
@@ -88,7 +89,7 @@ public:
 
     void step() override {
         for (std::size_t i : schedule_.severed(time_)) joints_[i].sever();
-        dSpaceCollide(space_, this, &OdeScene::near_callback);
+        joints_.collide(space_, contacts_, surface_, kMaxContacts, skip_segments_);
         joints_.step(scene_.dt, quick_ ? OdePlasticJoints::Stepper::Quick : OdePlasticJoints::Stepper::Exact);
         dJointGroupEmpty(contacts_);
         ++steps_;
@@ -169,20 +170,11 @@ private:
         if (b.structure) structure_.insert(body);
     }
 
-    static void near_callback(void* data, dGeomID g1, dGeomID g2) {
-        auto* self = static_cast<OdeScene*>(data);
-        const dBodyID b1 = dGeomGetBody(g1), b2 = dGeomGetBody(g2);
-        if (!b1 && !b2) return;
-        if (b1 && b2 && self->joints_.joined(b1, b2)) return;  // joined bodies do not collide
-        if (self->structure_.count(b1) && self->structure_.count(b2)) return;  // nor a structure's segments
-        dContact contact[kMaxContacts];
-        const int n = dCollide(g1, g2, kMaxContacts, &contact[0].geom, sizeof(dContact));
-        for (int i = 0; i < n; ++i) {
-            contact[i].surface.mode = dContactApprox1;
-            contact[i].surface.mu = kFriction;
-            const dJointID c = dJointCreateContact(self->world_, self->contacts_, &contact[i]);
-            dJointAttach(c, b1, b2);
-        }
+    static dSurfaceParameters contact_surface() {
+        dSurfaceParameters surface{};
+        surface.mode = dContactApprox1;
+        surface.mu = kFriction;
+        return surface;
     }
 
     const Scene& scene_;
@@ -194,6 +186,11 @@ private:
     dJointGroupID contacts_ = nullptr;
     std::vector<dBodyID> bodies_;  // nullptr for static bodies
     std::set<dBodyID> structure_;
+    const dSurfaceParameters surface_ = contact_surface();
+    // A structure's segments do not collide with each other (joined bodies never do).
+    const std::function<bool(dBodyID, dBodyID)> skip_segments_ = [this](dBodyID a, dBodyID b) {
+        return structure_.count(a) > 0 && structure_.count(b) > 0;
+    };
     std::size_t steps_ = 0;
     double time_ = 0.0;
 };

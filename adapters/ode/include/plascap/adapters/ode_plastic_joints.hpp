@@ -3,11 +3,13 @@
 // of the cycle: step(dt) engages the joints whose time has come, plans every joint's rows, steps the
 // world (dWorldQuickStep or dWorldStep), and settles every joint. It owns its joints.
 //
-// Collisions stay the caller's (ODE has no built-in contact handling): collide and create contact
-// joints before step(), empty their group after it, and skip pairs for which joined(a, b) is true —
-// bodies held by a plastic joint do not collide, as in Bullet; once the joint breaks they do again.
+// Collisions: ODE has no built-in contact handling. collide() does the usual dSpaceCollide with a
+// near callback that skips bodies held by an intact plastic joint (as Bullet does for a
+// constraint's bodies; once the joint breaks they collide again) — call it before step() and empty
+// the contact group after. A caller with its own near callback skips pairs for which joined(a, b).
 #include <ode/ode.h>
 
+#include <functional>
 #include <memory>
 #include <set>
 #include <utility>
@@ -38,6 +40,12 @@ public:
 
     // Whether an intact plastic joint joins a and b (in either order): such pairs do not collide.
     bool joined(dBodyID a, dBodyID b) const;
+
+    // Collides `space` (dSpaceCollide) and attaches a contact joint of `surface`, in `contacts`, at each
+    // of up to `max_contacts` points of every touching pair of geoms — but for pairs of bodies that
+    // joined() holds, pairs of static geoms, and pairs for which `skip` (if given) returns true.
+    void collide(dSpaceID space, dJointGroupID contacts, const dSurfaceParameters& surface, int max_contacts = 8,
+                 const std::function<bool(dBodyID, dBodyID)>& skip = {});
 
     double time() const { return time_; }  // [s], the sum of the steps taken
     std::size_t size() const { return joints_.size(); }
