@@ -153,6 +153,22 @@ Chords chord_lengths(const Ring& ring, BendingAxis axis, double a, double b) {
     return chords;
 }
 
+namespace {
+
+// ln(g1/g0) for g0, g1 > 0. Neighbouring vertices of a fine polygon (an arc's chords) give ratios
+// near 1, where ln(g1/g0) = 2·atanh(u), u = (g1 − g0)/(g1 + g0), is a short odd series (Abramowitz &
+// Stegun 4.1.27): for |u| < 1/128 the terms to u⁹ leave an error below u¹¹/11 < 1e-22·|u|, i.e. under
+// the round-off of either form. Elsewhere std::log. (Profiled: the logarithm was a third of the
+// time of all six capacities of a 1,000-vertex polygon.)
+double log_ratio_of(double g1, double g0) {
+    const double u = (g1 - g0) / (g1 + g0);
+    if (std::fabs(u) >= 1.0 / 128) return std::log(g1 / g0);
+    const double u2 = u * u;
+    return 2.0 * u * (1.0 + u2 * (1.0 / 3 + u2 * (1.0 / 5 + u2 * (1.0 / 7 + u2 * (1.0 / 9)))));
+}
+
+}  // namespace
+
 double distance_integral(const Ring& ring, Point c) {
     double sum = 0.0;
     const std::size_t n = ring.size();
@@ -174,7 +190,7 @@ double distance_integral(const Ring& ring, Point c) {
             // that it never cancels (r² = s² + h²).
             const double g0 = s0 >= 0.0 ? s0 + r0 : h * h / (r0 - s0);
             const double g1 = s1 >= 0.0 ? s1 + r1 : h * h / (r1 - s1);
-            const double log_ratio = g0 > 0.0 && g1 > 0.0 ? std::log(g1 / g0) : 0.0;  // 0 only if h² underflows
+            const double log_ratio = g0 > 0.0 && g1 > 0.0 ? log_ratio_of(g1, g0) : 0.0;  // 0 only if h² underflows
             const double triangle = h * (s1 * r1 - s0 * r0 + h * h * log_ratio);  // ×6
             sum += cross > 0.0 ? triangle : -triangle;
         }
