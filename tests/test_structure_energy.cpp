@@ -54,22 +54,19 @@ struct FrameRun {
     double closest_to_singular = INFINITY;  // the least |90° − |θy|| any joint reached [rad]
 };
 
-// Steps the scene as plastic-sim does, watching every joint's twist.
+// Runs the scene as plastic-sim does, watching every joint's twist.
 FrameRun run_frame(const Scene& scene, const std::string& engine) {
     const std::unique_ptr<SceneEngine> e = make_engine(engine, scene);
-    EnergyAccount energy(scene, *e);
     FrameRun r;
-    for (std::size_t i = 0; i < scene.steps(); ++i) {
-        const std::vector<AppliedLoad> loads = apply_scene_loads(scene, *e);
-        e->step();
-        energy.after_step(*e, loads);
+    SimulationOptions watch;
+    watch.after_each_step = [&](SceneEngine& stepped) {
         for (std::size_t j = 0; j < scene.joints.size(); ++j) {
-            if (!e->joint_law(j)) continue;
-            const double twist = std::abs(e->joint_positions(j)[index(Dof::My)]);
+            if (!stepped.joint_law(j)) continue;
+            const double twist = std::abs(stepped.joint_positions(j)[index(Dof::My)]);
             r.closest_to_singular = std::min(r.closest_to_singular, std::abs(M_PI / 2 - twist));
         }
-    }
-    r.energy = energy.ledger();
+    };
+    r.energy = run_simulation(scene, *e, watch).energy;
     return r;
 }
 

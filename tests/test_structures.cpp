@@ -10,7 +10,6 @@
 #include <string>
 
 #include "body_energy.hpp"
-#include "energy_ledger.hpp"
 #include "plascap/input_error.hpp"
 #include "scene.hpp"
 #include "scene_errors.hpp"
@@ -175,13 +174,13 @@ double held_deflection(const std::string& json, const std::string& engine, const
     const auto n = std::find_if(scene.nodes.begin(), scene.nodes.end(), [&](const SceneNode& s) { return s.name == node; });
     double sum = 0.0;
     int samples = 0;
-    for (std::size_t i = 0; i < scene.steps(); ++i) {
-        apply_scene_loads(scene, *e);
-        e->step();
-        if (e->time() < 1.5) continue;
-        sum += n->position[1] - world_point(e->body(n->at.body), n->at.local)[1];
+    SimulationOptions watch;
+    watch.after_each_step = [&](SceneEngine& engine) {
+        if (engine.time() < 1.5) return;
+        sum += n->position[1] - world_point(engine.body(n->at.body), n->at.local)[1];
         ++samples;
-    }
+    };
+    run_simulation(scene, *e, watch);
     return sum / samples;
 }
 

@@ -44,6 +44,7 @@ SimulationResult run_simulation(const Scene& scene, SceneEngine& engine, const S
         engine.step();
         energy.after_step(engine, loads);
         if (options.trace_csv) write_trace_row(*options.trace_csv, scene, engine, energy.ledger());
+        if (options.after_each_step) options.after_each_step(engine);
         if (options.progress && seconds_since(start) >= next_report) {
             next_report += 2.0;
             *options.progress << "plastic-sim: step " << i + 1 << " of " << result.steps << " (t = " << engine.time()

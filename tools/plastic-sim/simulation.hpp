@@ -1,6 +1,7 @@
 #pragma once
 // The engine-neutral run loop of plastic-sim: steps a SceneEngine through the scene, writes the
 // per-step trace, reports progress on long runs, and returns the end state.
+#include <functional>
 #include <iosfwd>
 #include <vector>
 
@@ -33,6 +34,8 @@ struct SimulationResult {
 struct SimulationOptions {
     std::ostream* trace_csv = nullptr;  // one row per step when set
     std::ostream* progress = nullptr;   // a line every ~2 s of wall time when set
+    // Called after every step, for a caller that watches the run (tests averaging a deflection).
+    std::function<void(SceneEngine&)> after_each_step;
 };
 
 SimulationResult run_simulation(const Scene& scene, SceneEngine& engine, const SimulationOptions& options);

@@ -28,9 +28,9 @@ JointEvent PlasticJointDriver::settle(const WorldLoad& on_b, const PerDof<double
     if (law_.broken()) return JointEvent::None;
     forces_ = joint_frame_loads(on_b, planned_centre_of_b_, planned_axes_);
     const double before = law_.plastic_displacement() + law_.plastic_rotation();
-    const bool broke = law_.settle(positions, forces_, time_);
+    law_.settle(positions, forces_, time_);
     if (sever_) law_.sever(time_);
-    if (broke || law_.broken()) {
+    if (law_.broken()) {
         if (on_break_)
             on_break_({time_, law_.plastic_displacement(), law_.plastic_rotation(), law_.dissipated()});
         return JointEvent::Broke;

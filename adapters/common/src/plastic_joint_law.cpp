@@ -59,9 +59,8 @@ void PlasticJointLaw::track(const PerDof<double>& measured, const PerDof<double>
 
 void PlasticJointLaw::start(const PerDof<double>& measured) {
     track(measured, measured);
-    const PerDof<double>& positions = measured;
     for (std::size_t i = 0; i < kDofCount; ++i) {
-        if (laws_[i]) laws_[i]->start(positions[i]);
+        if (laws_[i]) laws_[i]->start(measured[i]);
     }
 }
 

@@ -197,24 +197,17 @@ void OdePlasticJoint::wake() {
     if (a_) dBodyEnable(a_);
 }
 
-void OdePlasticJoint::after_step(double dt) {
-    if (driver_.broken()) {
-        driver_.settle({}, {}, dt);  // keeps the clock
-        return;
-    }
+JointEvent OdePlasticJoint::after_step(double dt) {
+    if (driver_.broken()) return driver_.settle({}, {}, dt);  // None; keeps the clock
     WorldLoad load;
     if (rotations_) add(load, rotation_feedback_);
     if (ball_) add(load, ball_feedback_);
     for (int i = 0; i < translation_joints_; ++i) add(load, translation_feedback_[i]);
     measured_ = measure();
-    switch (driver_.settle(load, measured_->positions, dt)) {
-        case JointEvent::Broke:
-            wake();
-            disable_rows();  // broken stays broken
-            break;
-        case JointEvent::Yielded: wake(); break;
-        case JointEvent::None: break;
-    }
+    const JointEvent event = driver_.settle(load, measured_->positions, dt);
+    if (event != JointEvent::None) wake();
+    if (event == JointEvent::Broke) disable_rows();  // broken stays broken
+    return event;
 }
 
 }  // namespace plascap

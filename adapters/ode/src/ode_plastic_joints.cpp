@@ -25,9 +25,7 @@ void OdePlasticJoints::step(double dt, Stepper stepper) {
     }
     for (Entry& e : joints_) {
         if (!e.joint->engaged()) continue;
-        const bool was_broken = e.joint->law().broken();
-        e.joint->after_step(dt);
-        if (!was_broken && e.joint->law().broken() && e.joint->body_a())
+        if (e.joint->after_step(dt) == JointEvent::Broke && e.joint->body_a())
             joined_.erase(joined_.find(std::minmax(e.joint->body_a(), e.joint->body_b())));
     }
     time_ += dt;

@@ -39,7 +39,8 @@ public:
     OdePlasticJoint& operator=(const OdePlasticJoint&) = delete;
 
     void before_step(double dt);
-    void after_step(double dt);
+    // What the step did to the joint (None once it is broken).
+    JointEvent after_step(double dt);
 
     const PlasticJointLaw& law() const { return driver_.law(); }
     PerDof<double> positions() const { return measure().positions; }
