@@ -100,11 +100,17 @@ private:
 
 }  // namespace
 
-std::unique_ptr<SceneEngine> make_bullet_scene(const Scene& scene, bool first_spring_constraint) {
-    if (first_spring_constraint) {
-        return std::make_unique<BulletScene<BulletPlasticJoint6DofSpring>>(scene, "btGeneric6DofSpringConstraint");
+enum class BulletConstraint { Plascap, Spring2, Spring };
+
+std::unique_ptr<SceneEngine> make_bullet_scene(const Scene& scene, BulletConstraint constraint) {
+    switch (constraint) {
+        case BulletConstraint::Spring:
+            return std::make_unique<BulletScene<BulletPlasticJoint6DofSpring>>(scene, "btGeneric6DofSpringConstraint");
+        case BulletConstraint::Spring2:
+            return std::make_unique<BulletScene<BulletPlasticJointSpring2>>(scene, "btGeneric6DofSpring2Constraint");
+        case BulletConstraint::Plascap: break;
     }
-    return std::make_unique<BulletScene<BulletPlasticJoint>>(scene, "btGeneric6DofSpring2Constraint");
+    return std::make_unique<BulletScene<BulletPlasticJoint>>(scene, "plascap::BulletPlasticConstraint");
 }
 
 }  // namespace plascap

@@ -4,7 +4,8 @@
 namespace plascap {
 
 #ifdef PLASCAP_HAVE_BULLET
-std::unique_ptr<SceneEngine> make_bullet_scene(const Scene& scene, bool first_spring_constraint);
+enum class BulletConstraint { Plascap, Spring2, Spring };
+std::unique_ptr<SceneEngine> make_bullet_scene(const Scene& scene, BulletConstraint constraint);
 #endif
 
 #ifdef PLASCAP_HAVE_ODE
@@ -14,7 +15,8 @@ std::unique_ptr<SceneEngine> make_ode_scene(const Scene& scene, bool quick);
 std::vector<std::string> available_engines() {
     std::vector<std::string> names;
 #ifdef PLASCAP_HAVE_BULLET
-    names.push_back("bullet");              // btGeneric6DofSpring2Constraint
+    names.push_back("bullet");              // plascap::BulletPlasticConstraint
+    names.push_back("bullet-spring2");      // btGeneric6DofSpring2Constraint, driven from outside
     names.push_back("bullet-6dof-spring");  // btGeneric6DofSpringConstraint, the paper's first
 #endif
 #ifdef PLASCAP_HAVE_ODE
@@ -26,8 +28,9 @@ std::vector<std::string> available_engines() {
 
 std::unique_ptr<SceneEngine> make_engine(const std::string& name, const Scene& scene) {
 #ifdef PLASCAP_HAVE_BULLET
-    if (name == "bullet") return make_bullet_scene(scene, false);
-    if (name == "bullet-6dof-spring") return make_bullet_scene(scene, true);
+    if (name == "bullet") return make_bullet_scene(scene, BulletConstraint::Plascap);
+    if (name == "bullet-spring2") return make_bullet_scene(scene, BulletConstraint::Spring2);
+    if (name == "bullet-6dof-spring") return make_bullet_scene(scene, BulletConstraint::Spring);
 #endif
 #ifdef PLASCAP_HAVE_ODE
     if (name == "ode") return make_ode_scene(scene, true);

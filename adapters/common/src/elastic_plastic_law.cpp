@@ -24,8 +24,9 @@ void validate_dof_law(const DofLaw& law, const char* where) {
     }
 }
 
-ElasticPlasticLaw::ElasticPlasticLaw(const DofLaw& law)
-    : law_(law), regime_(law.stiffness ? Regime::ElasticPlastic : Regime::RigidPlastic) {}
+ElasticPlasticLaw::ElasticPlasticLaw(const DofLaw& law, bool two_sided_bounds)
+    : law_(law), regime_(law.stiffness ? Regime::ElasticPlastic : Regime::RigidPlastic),
+      two_sided_bounds_(two_sided_bounds) {}
 
 void ElasticPlasticLaw::start(double position) {
     plastic_offset_ = position;
@@ -38,10 +39,15 @@ RowCommand ElasticPlasticLaw::plan(double position, double dt, double effective_
     omega_dt_ = spring_omega_dt(law_.stiffness, effective_mass, dt);
     if (regime_ != Regime::ElasticPlastic) {
         // Paper §2: target velocity 0, force bounded by the capacity; plus the correction.
-        last_bound_ = joint_bound ? *joint_bound : hold_bound();
         RowCommand hold;
         hold.kind = RowCommand::Kind::Hold;
-        hold.bound = last_bound_;
+        hold.bound = joint_bound ? *joint_bound : hold_bound();
+        if (two_sided_bounds_ && !joint_bound) {
+            hold.lower = -law_.capacity_positive, hold.upper = law_.capacity_negative;  // f on b, both sides
+        } else {
+            hold.lower = -hold.bound, hold.upper = hold.bound;
+        }
+        last_lower_ = hold.lower, last_upper_ = hold.upper;
         hold.velocity = -kHoldCorrection * (position - plastic_offset_) / dt;
         return hold;
     }
@@ -73,7 +79,8 @@ void ElasticPlasticLaw::settle(double position, double applied_force) {
 
 void ElasticPlasticLaw::settle_rigid_plastic(double position, double applied_force) {
     // Motion at capacity is plastic flow and the row's work on it, −f·Δx, is absorbed.
-    if (!(std::abs(applied_force) >= kAtCapacity * last_bound_)) return;
+    const bool at_capacity = applied_force >= kAtCapacity * last_upper_ || applied_force <= kAtCapacity * last_lower_;
+    if (!at_capacity) return;
     const double step = position - planned_position_;
     plastic_offset_ += step;
     accumulated_ += std::abs(step);

@@ -2,7 +2,8 @@
 
 namespace plascap {
 
-PlasticJointDriver::PlasticJointDriver(const PlasticJointSettings& settings) : law_(settings) {
+PlasticJointDriver::PlasticJointDriver(const PlasticJointSettings& settings, RowCapabilities rows)
+    : law_(settings, rows) {
     for (Dof dof : kAllDofs) {
         if (law_.mode(dof) == DofMode::Plastic && settings.laws[index(dof)].stiffness) needs_masses_ = true;
     }

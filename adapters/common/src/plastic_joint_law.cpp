@@ -6,11 +6,12 @@
 
 namespace plascap {
 
-PlasticJointLaw::PlasticJointLaw(const PlasticJointSettings& settings) : settings_(settings) {
+PlasticJointLaw::PlasticJointLaw(const PlasticJointSettings& settings, RowCapabilities rows)
+    : settings_(settings), rows_(rows) {
     validate_joint_settings(settings, "plastic joint");
     for (Dof dof : kAllDofs) {
         if (mode(dof) != DofMode::Plastic) continue;
-        laws_[index(dof)].emplace(settings.laws[index(dof)]);
+        laws_[index(dof)].emplace(settings.laws[index(dof)], rows.two_sided_bounds);
         if (settings.yield_condition) laws_[index(dof)]->couple();
     }
     if (settings.yield_condition) {
@@ -36,7 +37,8 @@ PerDof<double> PlasticJointLaw::continuous(const PerDof<double>& measured) const
     // attitude", 2006, §5.6): engines report |θy| ≤ π/2, so a joint twisting past 90° jumps from one
     // branch to the other, θx and θz by π. The law needs the angles continuous, or it books each jump
     // as flow (and its work with the wrong sign): of both branches, each unwrapped by whole turns
-    // against the last continuous angles, take the nearer.
+    // against the last continuous angles, take the nearer. Swing–twist angles have one branch: only
+    // the twist wraps.
     const double pi = std::acos(-1.0), turn = 2.0 * pi;
     const std::size_t x = index(Dof::Mx), y = index(Dof::My), z = index(Dof::Mz);
     const auto unwrap = [&](double angle, std::size_t i) {
@@ -45,6 +47,7 @@ PerDof<double> PlasticJointLaw::continuous(const PerDof<double>& measured) const
     };
     PerDof<double> same = measured, other = measured;
     same[x] = unwrap(measured[x], x), same[y] = unwrap(measured[y], y), same[z] = unwrap(measured[z], z);
+    if (!euler_rows()) return same;
     other[x] = unwrap(measured[x] + pi, x), other[y] = unwrap(pi - measured[y], y), other[z] = unwrap(measured[z] + pi, z);
     const auto distance = [&](const PerDof<double>& p) {
         return std::abs(p[x] - last_continuous_[x]) + std::abs(p[y] - last_continuous_[y]) + std::abs(p[z] - last_continuous_[z]);
@@ -87,7 +90,7 @@ PerDof<std::optional<RowCommand>> PlasticJointLaw::plan(const PerDof<double>& me
     for (std::size_t i = 0; i < kDofCount; ++i) {
         if (laws_[i]) commands[i] = laws_[i]->plan(positions[i], dt, effective_masses[i], bounds[i]);
     }
-    if (std::optional<RowCommand>& my = commands[index(Dof::My)]; my && twist_sign(positions) < 0.0) {
+    if (std::optional<RowCommand>& my = commands[index(Dof::My)]; my && euler_rows() && twist_sign(positions) < 0.0) {
         my->velocity = -my->velocity;
         my->force = -my->force;
     }
@@ -98,7 +101,7 @@ bool PlasticJointLaw::settle(const PerDof<double>& measured, const PerDof<double
     if (broken()) return false;
     const PerDof<double> positions = continuous(measured);
     PerDof<double> forces = row_forces;
-    forces[index(Dof::My)] *= twist_sign(positions);
+    if (euler_rows()) forces[index(Dof::My)] *= twist_sign(positions);
     // The rows' work on the step. Rotation rows act about the Euler row axes e_i (joint_frame.hpp),
     // the dofs are the Euler angles θ of R = Rz·Ry·Rx, and ω = Σ g_i·θ̇_i with g_x = b's x, g_y = e_y,
     // g_z = a's z. A row's moment λ_i·e_i does λ_i·(e_i·g_i)·Δθ_i of work (e_j·g_i = 0 for j ≠ i):
@@ -107,9 +110,10 @@ bool PlasticJointLaw::settle(const PerDof<double>& measured, const PerDof<double
     // bending rows would dissipate 1/cos θ_y too much — energy the ledger then shows as created.
     // The rows' axes follow the engines' branch (|θy| ≤ π/2, so cos θy ≥ 0), whatever branch the
     // continuous angles are on.
+    // Swing–twist rows are the angles' exact gradients (swing_twist.hpp): their factor is 1.
     const double twist = 0.5 * (last_measured_[index(Dof::My)] + measured[index(Dof::My)]);
     for (Dof dof : {Dof::Mx, Dof::Mz}) {
-        if (laws_[index(dof)]) laws_[index(dof)]->set_work_factor(std::cos(twist));
+        if (laws_[index(dof)] && euler_rows()) laws_[index(dof)]->set_work_factor(std::cos(twist));
     }
     track(measured, positions);
     for (std::size_t i = 0; i < kDofCount; ++i) {

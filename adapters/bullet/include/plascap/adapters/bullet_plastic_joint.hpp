@@ -1,18 +1,21 @@
 #pragma once
-// A plastic joint in an unmodified Bullet: a 6-dof constraint whose rows follow a PlasticJointLaw
-// (adapters/common). The paper develops both of Bullet's 6-dof spring constraints, and so does this:
-// BulletPlasticJoint drives a btGeneric6DofSpring2Constraint, BulletPlasticJoint6DofSpring a
-// btGeneric6DofSpringConstraint; they differ only in how a motor is set (bullet_six_dof_rows.hpp). Per dof: free (no row), rigid (a locked limit row) or plastic
-// (a motor row: Hold = target velocity 0 bounded by the capacity; Push = exactly the capped spring
-// force). After every step, as a btActionInterface, it reads the joint feedback (world frame, torque
-// about b's centre of mass) and hands it to the engine-neutral PlasticJointDriver, which settles the
-// law and plans the next step's rows. A joint that yields or breaks wakes its bodies (a slow plastic
-// flow is never frozen by Bullet's sleeping); a broken joint leaves the world, so its bodies collide
-// again, and calls the break callback. Destroying an attached joint detaches it.
+// A plastic joint in an unmodified Bullet: a constraint whose rows follow a PlasticJointLaw
+// (adapters/common). By default the constraint is plascap's own (BulletPlasticConstraint: exactly
+// the rows the dofs need, both capacities as a row's bounds, swing–twist rotations without a 90°
+// singularity). The paper's route drives one of Bullet's 6-dof spring constraints from outside
+// (BulletPlasticJointSpring2, BulletPlasticJoint6DofSpring); bullet_six_dof_rows.hpp holds what
+// differs between the three. Per dof: free (no row), rigid (a locked row) or plastic (Hold = a
+// rate target bounded by the capacity; Push = exactly the capped spring force). After every step,
+// as a btActionInterface, it reads the joint feedback (world frame, torque about b's centre of mass)
+// and hands it to the engine-neutral PlasticJointDriver, which settles the law and plans the next
+// step's rows. A joint that yields or breaks wakes its bodies (a slow plastic flow is never frozen by
+// Bullet's sleeping); a broken joint leaves the world, so its bodies collide again, and calls the
+// break callback. Destroying an attached joint detaches it.
 #include <btBulletDynamicsCommon.h>
 
 #include <optional>
 
+#include "plascap/adapters/bullet_plastic_constraint.hpp"
 #include "plascap/adapters/plastic_joint_driver.hpp"
 
 namespace plascap {
@@ -51,10 +54,7 @@ public:
     double time() const { return driver_.time(); }
 
 private:
-    void set_up_rows();
-    void plan(double dt, const PerDof<double>& positions);
-    void apply(const PerDof<std::optional<RowCommand>>& commands);
-    JointAxesInWorld axes_in_world() const;
+    void plan(double dt, const JointFrameState& state);
     void wake();
     void leave_world();
 
@@ -69,10 +69,14 @@ private:
     bool constraint_in_world_ = false;  // until it breaks
 };
 
+extern template class BasicBulletPlasticJoint<BulletPlasticConstraint>;
 extern template class BasicBulletPlasticJoint<btGeneric6DofSpring2Constraint>;
 extern template class BasicBulletPlasticJoint<btGeneric6DofSpringConstraint>;
 
-using BulletPlasticJoint = BasicBulletPlasticJoint<btGeneric6DofSpring2Constraint>;
+// The default: plascap's own constraint (bullet_plastic_constraint.hpp).
+using BulletPlasticJoint = BasicBulletPlasticJoint<BulletPlasticConstraint>;
+// The paper's route: Bullet's 6-dof spring constraints driven from outside.
+using BulletPlasticJointSpring2 = BasicBulletPlasticJoint<btGeneric6DofSpring2Constraint>;
 using BulletPlasticJoint6DofSpring = BasicBulletPlasticJoint<btGeneric6DofSpringConstraint>;
 
 }  // namespace plascap

@@ -35,7 +35,9 @@ void validate_dof_law(const DofLaw& law, const char* where);
 
 class ElasticPlasticLaw {
 public:
-    explicit ElasticPlasticLaw(const DofLaw& law);
+    // `two_sided_bounds`: the engine's Hold row carries both capacities (row_capabilities.hpp), so a
+    // load reversal meets the capacity of its own side from its first step.
+    explicit ElasticPlasticLaw(const DofLaw& law, bool two_sided_bounds = false);
 
     // When the joint takes hold: the dof's position then is its unloaded, unyielded state.
     void start(double position);
@@ -82,7 +84,8 @@ private:
     double accumulated_ = 0.0;
     double dissipated_ = 0.0;
     double last_force_ = 0.0;
-    double last_bound_ = 0.0;
+    double last_lower_ = 0.0, last_upper_ = 0.0;  // the Hold row's force range last planned
+    bool two_sided_bounds_ = false;
     bool coupled_ = false;
     double work_factor_ = 1.0;
 };

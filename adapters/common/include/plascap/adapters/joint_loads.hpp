@@ -17,7 +17,7 @@ struct WorldLoad {
 struct JointAxesInWorld {
     Vec3 anchor{};                      // where the joint acts on b [m]
     std::array<Vec3, 3> translation{};  // unit axes of the Qx, N, Qz rows
-    std::array<Vec3, 3> rotation{};     // unit axes of the Mx, My, Mz rows
+    std::array<Vec3, 3> rotation{};     // axes of the Mx, My, Mz rows (unit, or an angle's gradient)
 };
 
 // Generalised forces on b per dof: the components of F along the translation axes, and of the

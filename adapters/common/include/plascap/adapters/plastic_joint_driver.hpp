@@ -33,7 +33,8 @@ using BreakCallback = std::function<void(const JointBreak&)>;
 
 class PlasticJointDriver {
 public:
-    explicit PlasticJointDriver(const PlasticJointSettings& settings);
+    // `rows`: what the adapter's rows measure and carry (row_capabilities.hpp).
+    explicit PlasticJointDriver(const PlasticJointSettings& settings, RowCapabilities rows = {});
 
     // The joint takes hold at `now` [s]; `positions` (as measured) are its unloaded state, and where
     // its rigid dofs are held.

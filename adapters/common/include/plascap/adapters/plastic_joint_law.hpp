@@ -7,12 +7,14 @@
 #include "plascap/adapters/dof.hpp"
 #include "plascap/adapters/elastic_plastic_law.hpp"
 #include "plascap/adapters/plastic_joint_settings.hpp"
+#include "plascap/adapters/row_capabilities.hpp"
 
 namespace plascap {
 
 class PlasticJointLaw {
 public:
-    explicit PlasticJointLaw(const PlasticJointSettings& settings);
+    // `rows`: what the engine's rows measure and carry (row_capabilities.hpp).
+    explicit PlasticJointLaw(const PlasticJointSettings& settings, RowCapabilities rows = {});
 
     // When the joint takes hold (it may be built before, on bodies that have moved since): these
     // positions are its unloaded state. Engines lock rigid dofs at them too. Every call takes the
@@ -55,7 +57,10 @@ private:
     PerDof<double> continuous(const PerDof<double>& measured) const;
     void track(const PerDof<double>& measured, const PerDof<double>& continuous_positions);
 
+    bool euler_rows() const { return rows_.rotations == RotationMeasure::EulerXYZ; }
+
     PlasticJointSettings settings_;
+    RowCapabilities rows_;
     PerDof<std::optional<ElasticPlasticLaw>> laws_;
     std::optional<double> broken_at_;
     PerDof<double> last_loads_{};  // the loads (−forces on b) of the last step, for a coupled condition

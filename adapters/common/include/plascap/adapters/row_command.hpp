@@ -14,7 +14,9 @@ struct RowCommand {
         Push,
     };
     Kind kind = Kind::Hold;
-    double bound = 0.0;     // Hold: largest force magnitude, ≥ 0
+    double bound = 0.0;     // Hold: largest force magnitude, ≥ 0, for a row with one symmetric bound
+    double lower = 0.0;     // Hold: the force range, lower ≤ 0 ≤ upper, for a row with two bounds
+    double upper = 0.0;     //   (RowCapabilities::two_sided_bounds); the law books flow on either
     double velocity = 0.0;  // Hold: target rate of the dof [m/s | rad/s]
     double force = 0.0;  // Push: signed force, |force| ≤ the capacity on its side
 };

@@ -1,0 +1,68 @@
+#pragma once
+// plascap's own Bullet constraint for a plastic joint: it emits exactly the rows its dofs need —
+// none for a free dof, a locked row for a rigid one, and for a plastic one the row the shared law
+// commands (Hold: a rate target within the force range [lower, upper], both capacities at once;
+// Push: exactly the spring force) — where Bullet's 6-dof springs, driven from outside, carry every
+// axis's limit, motor and spring machinery and one symmetric motor bound.
+//   translations: the components, along a's frame axes, of b's anchor minus a's; the rows act at
+//     b's anchor on both bodies, which makes each row's rate the exact rate of its component;
+//   rotations: swing and twist (swing_twist.hpp), the rows along their exact gradients — no
+//     singularity at a 90° twist, and a row's force is its angle's generalised force.
+// The frame is measured once per step: measure() caches it until a body moves, so the joint's
+// settle-and-plan after a step and the rows of the next share one computation.
+#include <btBulletDynamicsCommon.h>
+
+#include <array>
+#include <cstddef>
+
+#include "plascap/adapters/joint_frame.hpp"
+#include "plascap/adapters/row_capabilities.hpp"
+#include "plascap/adapters/row_command.hpp"
+
+namespace plascap {
+
+class BulletPlasticConstraint : public btTypedConstraint {
+public:
+    static constexpr RowCapabilities kRows{RotationMeasure::SwingTwist, true};
+
+    // b joined to a (nullptr: the world) at `frame_in_world`: origin = anchor, basis columns = the
+    // joint's x, y (beam axis) and z.
+    BulletPlasticConstraint(btRigidBody* a, btRigidBody& b, const btTransform& frame_in_world);
+
+    // What dof i's row does from the next step on (dofs in Dof order: x, y, z, then rotations).
+    void free_row(std::size_t i);
+    void lock_row(std::size_t i, double at);  // held at position `at` [m | rad], errors corrected at the ERP
+    void command_row(std::size_t i, const RowCommand& command);
+
+    // The joint now, from the bodies' poses: dof positions of b relative to a, the rows' axes and
+    // anchor in the world. Recomputed only when a body has moved since the last call.
+    const JointFrameState& measure();
+
+    void getInfo1(btConstraintInfo1* info) override;
+    void getInfo2(btConstraintInfo2* info) override;
+    // BT_CONSTRAINT_STOP_ERP / BT_CONSTRAINT_STOP_CFM set the locked rows' error reduction (default:
+    // the world's ERP; getParam then gives −1) and constraint force mixing (default 0); other
+    // parameters are ignored.
+    void setParam(int num, btScalar value, int axis = -1) override;
+    btScalar getParam(int num, int axis = -1) const override;
+
+private:
+    enum class RowKind { None, Lock, Hold, Push };
+    struct Row {
+        RowKind kind = RowKind::None;
+        double target = 0.0;  // Lock: position; Hold: rate
+        double lower = 0.0, upper = 0.0;  // Hold and Push: force range on b [N | N·m]
+    };
+
+    btTransform frame_in_a_, frame_in_b_;
+    std::array<Row, 6> rows_{};
+    int row_count_ = 0;
+    btScalar stop_erp_ = -1.0;  // < 0: the world's
+    btScalar stop_cfm_ = 0.0;
+    // The measurement and the body poses it was made at.
+    JointFrameState state_{};
+    btTransform measured_a_, measured_b_;
+    bool measured_ = false;
+};
+
+}  // namespace plascap

@@ -1,0 +1,129 @@
+#include "plascap/adapters/bullet_plastic_constraint.hpp"
+
+#include <cmath>
+
+#include "plascap/adapters/swing_twist.hpp"
+
+namespace plascap {
+namespace {
+
+Vec3 to_vec3(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
+btVector3 to_bt(const Vec3& v) { return {btScalar(v[0]), btScalar(v[1]), btScalar(v[2])}; }
+
+void store(btScalar* at, const btVector3& v) {
+    at[0] = v.x(), at[1] = v.y(), at[2] = v.z();
+}
+
+}  // namespace
+
+BulletPlasticConstraint::BulletPlasticConstraint(btRigidBody* a, btRigidBody& b, const btTransform& frame_in_world)
+    : btTypedConstraint(MAX_CONSTRAINT_TYPE, a ? *a : getFixedBody(), b),
+      frame_in_a_(m_rbA.getCenterOfMassTransform().inverse() * frame_in_world),
+      frame_in_b_(b.getCenterOfMassTransform().inverse() * frame_in_world) {}
+
+void BulletPlasticConstraint::free_row(std::size_t i) {
+    if (rows_[i].kind != RowKind::None) --row_count_;
+    rows_[i] = {};
+}
+
+void BulletPlasticConstraint::lock_row(std::size_t i, double at) {
+    if (rows_[i].kind == RowKind::None) ++row_count_;
+    rows_[i] = {RowKind::Lock, at, 0.0, 0.0};
+}
+
+void BulletPlasticConstraint::command_row(std::size_t i, const RowCommand& c) {
+    if (rows_[i].kind == RowKind::None) ++row_count_;
+    if (c.kind == RowCommand::Kind::Hold) {
+        rows_[i] = {RowKind::Hold, c.velocity, c.lower, c.upper};
+    } else {
+        rows_[i] = {RowKind::Push, 0.0, c.force, c.force};
+    }
+}
+
+const JointFrameState& BulletPlasticConstraint::measure() {
+    const btTransform& a = m_rbA.getCenterOfMassTransform();
+    const btTransform& b = m_rbB.getCenterOfMassTransform();
+    if (measured_ && a == measured_a_ && b == measured_b_) return state_;
+    measured_a_ = a, measured_b_ = b, measured_ = true;
+    const btTransform frame_a = a * frame_in_a_, frame_b = b * frame_in_b_;
+    const btMatrix3x3& ra = frame_a.getBasis();
+    const btMatrix3x3 b_in_a = ra.transposeTimes(frame_b.getBasis());
+    const btVector3 offset = ra.transpose() * (frame_b.getOrigin() - frame_a.getOrigin());
+    Mat3 r{};
+    for (int i = 0; i < 3; ++i) r[i] = to_vec3(b_in_a[i]);
+    const SwingTwist st = swing_twist(r);
+    for (int i = 0; i < 3; ++i) {
+        state_.positions[i] = offset[i];
+        state_.positions[i + 3] = st.angles[i];
+        state_.axes.translation[i] = to_vec3(ra.getColumn(i));
+        state_.axes.rotation[i] = to_vec3(ra * to_bt(st.gradients[i]));  // a's frame to the world
+    }
+    state_.axes.anchor = to_vec3(frame_b.getOrigin());
+    return state_;
+}
+
+void BulletPlasticConstraint::getInfo1(btConstraintInfo1* info) {
+    info->m_numConstraintRows = row_count_;
+    info->nub = 0;
+}
+
+void BulletPlasticConstraint::getInfo2(btConstraintInfo2* info) {
+    const JointFrameState& s = measure();
+    const btVector3 anchor = to_bt(s.axes.anchor);
+    const btVector3 lever_a = anchor - m_rbA.getCenterOfMassPosition();
+    const btVector3 lever_b = anchor - m_rbB.getCenterOfMassPosition();
+    const btScalar erp = stop_erp_ >= 0.0 ? stop_erp_ : info->erp;
+    const double turn = 2.0 * std::acos(-1.0);
+    int r = 0;
+    for (std::size_t i = 0; i < rows_.size(); ++i) {
+        const Row& row = rows_[i];
+        if (row.kind == RowKind::None) continue;
+        const int at = r * info->rowskip;  // the Jacobians' and the row scalars' stride
+        // J·v = the dof's rate: +axis on b, −axis on a; a translation row acts at b's anchor.
+        if (i < 3) {
+            const btVector3 axis = to_bt(s.axes.translation[i]);
+            store(info->m_J1linearAxis + at, -axis);
+            store(info->m_J1angularAxis + at, -lever_a.cross(axis));
+            store(info->m_J2linearAxis + at, axis);
+            store(info->m_J2angularAxis + at, lever_b.cross(axis));
+        } else {
+            const btVector3 axis = to_bt(s.axes.rotation[i - 3]);
+            store(info->m_J1angularAxis + at, -axis);
+            store(info->m_J2angularAxis + at, axis);
+        }
+        switch (row.kind) {
+            case RowKind::Lock: {
+                double error = row.target - s.positions[i];
+                if (i >= 3) error = std::remainder(error, turn);  // angles: the short way round
+                info->m_constraintError[at] = erp * info->fps * error;
+                info->cfm[at] = stop_cfm_;
+                break;
+            }
+            case RowKind::Hold:  // bounds are impulses over the step
+                info->m_constraintError[at] = row.target;
+                info->m_lowerLimit[at] = row.lower / info->fps;
+                info->m_upperLimit[at] = row.upper / info->fps;
+                break;
+            case RowKind::Push:
+                info->m_constraintError[at] = 0.0;
+                info->m_lowerLimit[at] = row.lower / info->fps;
+                info->m_upperLimit[at] = row.upper / info->fps;
+                break;
+            case RowKind::None: break;
+        }
+        ++r;
+    }
+}
+
+void BulletPlasticConstraint::setParam(int num, btScalar value, int) {
+    if (num == BT_CONSTRAINT_STOP_ERP || num == BT_CONSTRAINT_ERP) stop_erp_ = value;
+    if (num == BT_CONSTRAINT_STOP_CFM || num == BT_CONSTRAINT_CFM) stop_cfm_ = value;
+}
+
+btScalar BulletPlasticConstraint::getParam(int num, int) const {
+    if (num == BT_CONSTRAINT_STOP_ERP || num == BT_CONSTRAINT_ERP) return stop_erp_;
+    if (num == BT_CONSTRAINT_STOP_CFM || num == BT_CONSTRAINT_CFM) return stop_cfm_;
+    return 0.0;
+}
+
+}  // namespace plascap
