@@ -1,5 +1,7 @@
-// The Bullet adapter's cost (issue 6): one world step with 1,000 plastic joints against the same
-// scene with 1,000 btFixedConstraint. Target: ≤ 1.3×. Run: build/bench/bench_bullet_joints
+// The Bullet adapter's cost (issue 16): one world step with n plastic joints against the same scene
+// with n btFixedConstraint, measured in the same run (counter vs_rigid; goal ≤ 1.15 for rigid-plastic
+// and elastic-plastic joints, one solve and per island), and the cost per joint from 100 to 10,000
+// joints (ns_per_joint). Run: build/bench/bench_bullet_joints (docs/adapters.md, "Cost").
 #include <benchmark/benchmark.h>
 
 #include <BulletCollision/CollisionDispatch/btSimulationIslandManager.h>
@@ -11,77 +13,131 @@
 #include "plascap/adapters/bullet_plastic_joint.hpp"
 #include "plascap/adapters/bullet_world.hpp"
 #include "joint_yield_settings.hpp"
+#include "vs_rigid.hpp"
 
 namespace {
 
-constexpr int kJoints = 1000;
 constexpr double kDt = 1.0 / 60;
 
-// 1,000 boxes of 10 kg, each held from the world at its top, spaced so none collide.
+// n boxes of 10 kg, each held from the world at its top, spaced so none collide.
 struct HangingBoxes {
     plascap::BulletWorld world{btVector3(0, -9.81, 0), 10};
     std::vector<std::unique_ptr<plascap::BulletBox>> boxes;
-    explicit HangingBoxes(bool split_islands) {
+    HangingBoxes(int n, bool split_islands) {
         // Bullet's per-island solve finds each island's constraints by scanning all of them: O(n²)
-        // per step, which dominates both cases at 1,000 joints. Unsplit, everything is one solve.
+        // per step (issue 16's scaling sweep measures it). Unsplit, everything is one solve.
         world.world().getSimulationIslandManager()->setSplitIslands(split_islands);
-        for (int i = 0; i < kJoints; ++i) {
-            const btVector3 at(3.0 * (i % 40), -0.5, 3.0 * (i / 40));
+        for (int i = 0; i < n; ++i) {
             boxes.push_back(std::make_unique<plascap::BulletBox>(btVector3(0.2, 0.5, 0.2), 10.0,
-                                                                 btTransform(btQuaternion::getIdentity(), at)));
+                                                                 btTransform(btQuaternion::getIdentity(), at(i, -0.5))));
             world.world().addRigidBody(&boxes.back()->body());
         }
     }
     ~HangingBoxes() {
         for (auto& b : boxes) world.world().removeRigidBody(&b->body());
     }
-    btTransform anchor(int i) const { return btTransform(btQuaternion::getIdentity(), btVector3(3.0 * (i % 40), 0, 3.0 * (i / 40))); }
+    static btVector3 at(int i, double y) { return btVector3(3.0 * (i % 100), y, 3.0 * (i / 100)); }
+    btTransform anchor(int i) const { return btTransform(btQuaternion::getIdentity(), at(i, 0.0)); }
+    int size() const { return static_cast<int>(boxes.size()); }
 };
 
-// state.range(1): 1 = Bullet's default per-island solve, 0 = one solve for the whole world.
-void FixedConstraints(benchmark::State& state) {
-    HangingBoxes scene(state.range(1) == 1);
+struct FixedJoints {
+    HangingBoxes& scene;
     std::vector<std::unique_ptr<btFixedConstraint>> joints;
-    for (int i = 0; i < kJoints; ++i) {
-        btRigidBody& body = scene.boxes[i]->body();
-        const btTransform in_b = body.getCenterOfMassTransform().inverse() * scene.anchor(i);
-        joints.push_back(std::make_unique<btFixedConstraint>(btTypedConstraint::getFixedBody(), body, scene.anchor(i), in_b));
-        scene.world.world().addConstraint(joints.back().get(), true);
+    explicit FixedJoints(HangingBoxes& s) : scene(s) {
+        for (int i = 0; i < s.size(); ++i) {
+            btRigidBody& body = s.boxes[i]->body();
+            const btTransform in_b = body.getCenterOfMassTransform().inverse() * s.anchor(i);
+            joints.push_back(std::make_unique<btFixedConstraint>(btTypedConstraint::getFixedBody(), body, s.anchor(i), in_b));
+            s.world.world().addConstraint(joints.back().get(), true);
+        }
     }
-    for (auto _ : state) scene.world.step(kDt);
-    for (auto& j : joints) scene.world.world().removeConstraint(j.get());
-}
-BENCHMARK(FixedConstraints)->Args({0, 1})->Args({0, 0})->Unit(benchmark::kMicrosecond);
+    ~FixedJoints() {
+        for (auto& j : joints) scene.world.world().removeConstraint(j.get());
+    }
+};
 
-// One plastic joint per box with `settings`; times the world's steps.
-void step_with_joints(benchmark::State& state, HangingBoxes& scene, const plascap::PlasticJointSettings& settings) {
-    std::vector<std::unique_ptr<plascap::BulletPlasticJoint>> joints;
-    for (int i = 0; i < kJoints; ++i) {
-        joints.push_back(std::make_unique<plascap::BulletPlasticJoint>(nullptr, scene.boxes[i]->body(), scene.anchor(i), settings));
+double rigid_seconds(int n, bool split) {
+    return bench::cached_baseline(n, split, [&] {
+        HangingBoxes scene(n, split);
+        FixedJoints fixed(scene);
+        return bench::seconds_per_step([&] { scene.world.step(kDt); }, n);
+    });
+}
+
+// Arguments: joints, split islands (1 = Bullet's default per-island solve, 0 = one solve).
+void Fixed(benchmark::State& state) {
+    const int n = static_cast<int>(state.range(0));
+    const bool split = state.range(1) == 1;
+    const double rigid = rigid_seconds(n, split);
+    HangingBoxes scene(n, split);
+    FixedJoints fixed(scene);
+    bench::time_steps(state, [&] { scene.world.step(kDt); }, rigid, n);
+}
+
+// One plastic joint of type Joint per box with `settings`; times the world's steps.
+template <class Joint>
+void step_with_joints(benchmark::State& state, int n, bool split, const plascap::PlasticJointSettings& settings) {
+    const double rigid = rigid_seconds(n, split);
+    HangingBoxes scene(n, split);
+    std::vector<std::unique_ptr<Joint>> joints;
+    for (int i = 0; i < n; ++i) {
+        joints.push_back(std::make_unique<Joint>(nullptr, scene.boxes[i]->body(), scene.anchor(i), settings));
         joints.back()->attach(scene.world.world(), kDt);
     }
-    for (auto _ : state) scene.world.step(kDt);
+    bench::time_steps(state, [&] { scene.world.step(kDt); }, rigid, n);
     joints.clear();  // each joint leaves the world as it is destroyed
 }
 
 // All six dofs plastic (capacities well above the load, so the boxes hang still as with the fixed
-// joints); state.range(0) = 1 gives every dof an elastic stiffness (explicit spring rows).
-void PlasticJoints(benchmark::State& state) {
-    HangingBoxes scene(state.range(1) == 1);
+// joints); elastic = 1 gives every dof an elastic stiffness (explicit spring rows): 5,000 N/m, so a
+// box sags 2 cm (ω·dt = 0.37, well inside eq. 3.2) and its AABB stays in the broadphase's margin as
+// the fixed joints' do, and 100 N·m/rad about the unloaded rotations.
+plascap::PlasticJointSettings all_six_plastic(bool elastic) {
     plascap::PlasticJointSettings settings;
     for (plascap::Dof dof : plascap::kAllDofs) {
         settings.modes[plascap::index(dof)] = plascap::DofMode::Plastic;
         settings.laws[plascap::index(dof)] = plascap::DofLaw{1e5, 1e5, std::nullopt};
-        if (state.range(0) == 1) settings.laws[plascap::index(dof)].stiffness = 100.0;
+        if (elastic) settings.laws[plascap::index(dof)].stiffness = plascap::is_rotation(dof) ? 100.0 : 5000.0;
     }
-    step_with_joints(state, scene, settings);
+    return settings;
 }
-BENCHMARK(PlasticJoints)->Args({0, 1})->Args({1, 1})->Args({0, 0})->Args({1, 0})->Unit(benchmark::kMicrosecond);
 
-// Box against coupled yield: the cases of joint_yield_settings.hpp.
+// Arguments: elastic, joints, split islands. Plascap: the default BulletPlasticJoint; Spring2: the
+// paper's route (a btGeneric6DofSpring2Constraint driven from outside).
+void Plascap(benchmark::State& state) {
+    step_with_joints<plascap::BulletPlasticJoint>(state, static_cast<int>(state.range(1)), state.range(2) == 1,
+                                                  all_six_plastic(state.range(0) == 1));
+}
+void Spring2(benchmark::State& state) {
+    step_with_joints<plascap::BulletPlasticJointSpring2>(state, static_cast<int>(state.range(1)), state.range(2) == 1,
+                                                         all_six_plastic(state.range(0) == 1));
+}
+
+// Every size on one solve; 100 and 1,000 joints per island too (10,000 per island is the O(n²)
+// scan: minutes per run).
+void sizes(benchmark::internal::Benchmark* b, bool with_elastic) {
+    for (int elastic : with_elastic ? std::vector<int>{0, 1} : std::vector<int>{-1}) {
+        for (int n : {100, 1000, 10000}) {
+            for (int split : {0, 1}) {
+                if (n == 10000 && split == 1) continue;
+                if (elastic < 0) {
+                    b->Args({n, split});
+                } else {
+                    b->Args({elastic, n, split});
+                }
+            }
+        }
+    }
+    b->Unit(benchmark::kMicrosecond);
+}
+BENCHMARK(Fixed)->ArgNames({"joints", "split"})->Apply([](auto* b) { sizes(b, false); });
+BENCHMARK(Plascap)->ArgNames({"elastic", "joints", "split"})->Apply([](auto* b) { sizes(b, true); });
+BENCHMARK(Spring2)->ArgNames({"elastic", "joints", "split"})->Apply([](auto* b) { sizes(b, true); });
+
+// Box against coupled yield: the cases of joint_yield_settings.hpp, 1,000 joints, one solve.
 void YieldSurfaces(benchmark::State& state) {
-    HangingBoxes scene(false);
-    step_with_joints(state, scene, bench::yield_surface_settings(state));
+    step_with_joints<plascap::BulletPlasticJoint>(state, 1000, false, bench::yield_surface_settings(state));
 }
 BENCHMARK(YieldSurfaces)->Apply(bench::yield_surface_cases);
 
