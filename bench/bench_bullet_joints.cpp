@@ -21,9 +21,10 @@ constexpr double kDt = 1.0 / 60;
 
 // n boxes of 10 kg, each held from the world at its top, spaced so none collide.
 struct HangingBoxes {
-    plascap::BulletWorld world{btVector3(0, -9.81, 0), 10};
+    plascap::BulletWorld world;
     std::vector<std::unique_ptr<plascap::BulletBox>> boxes;
-    HangingBoxes(int n, bool split_islands) {
+    HangingBoxes(int n, bool split_islands, plascap::BulletSolverKind solver = plascap::BulletSolverKind::Plascap)
+        : world(btVector3(0, -9.81, 0), 10, solver) {
         // Bullet's per-island solve finds each island's constraints by scanning all of them: O(n²)
         // per step (issue 16's scaling sweep measures it). Unsplit, everything is one solve.
         world.world().getSimulationIslandManager()->setSplitIslands(split_islands);
@@ -59,7 +60,7 @@ struct FixedJoints {
 
 double rigid_seconds(int n, bool split) {
     return bench::cached_baseline(n, split, [&] {
-        HangingBoxes scene(n, split);
+        HangingBoxes scene(n, split, plascap::BulletSolverKind::Bullet);
         FixedJoints fixed(scene);
         return bench::seconds_per_step([&] { scene.world.step(kDt); }, n);
     });
@@ -69,17 +70,17 @@ double rigid_seconds(int n, bool split) {
 void Fixed(benchmark::State& state) {
     const int n = static_cast<int>(state.range(0));
     const bool split = state.range(1) == 1;
-    const double rigid = rigid_seconds(n, split);
-    HangingBoxes scene(n, split);
+    HangingBoxes scene(n, split, plascap::BulletSolverKind::Bullet);  // the engine as it comes
     FixedJoints fixed(scene);
-    bench::time_steps(state, [&] { scene.world.step(kDt); }, rigid, n);
+    bench::time_baseline(state, [&] { scene.world.step(kDt); }, n, split);
 }
 
 // One plastic joint of type Joint per box with `settings`; times the world's steps.
 template <class Joint>
-void step_with_joints(benchmark::State& state, int n, bool split, const plascap::PlasticJointSettings& settings) {
+void step_with_joints(benchmark::State& state, int n, bool split, const plascap::PlasticJointSettings& settings,
+                      plascap::BulletSolverKind solver = plascap::BulletSolverKind::Plascap) {
     const double rigid = rigid_seconds(n, split);
-    HangingBoxes scene(n, split);
+    HangingBoxes scene(n, split, solver);
     std::vector<std::unique_ptr<Joint>> joints;
     for (int i = 0; i < n; ++i) {
         joints.push_back(std::make_unique<Joint>(nullptr, scene.boxes[i]->body(), scene.anchor(i), settings));
@@ -109,6 +110,11 @@ void Plascap(benchmark::State& state) {
     step_with_joints<plascap::BulletPlasticJoint>(state, static_cast<int>(state.range(1)), state.range(2) == 1,
                                                   all_six_plastic(state.range(0) == 1));
 }
+// The default joint on Bullet's own solver: cold-started rows, Baumgarte in their velocities.
+void PlascapCold(benchmark::State& state) {
+    step_with_joints<plascap::BulletPlasticJoint>(state, static_cast<int>(state.range(1)), state.range(2) == 1,
+                                                  all_six_plastic(state.range(0) == 1), plascap::BulletSolverKind::Bullet);
+}
 void Spring2(benchmark::State& state) {
     step_with_joints<plascap::BulletPlasticJointSpring2>(state, static_cast<int>(state.range(1)), state.range(2) == 1,
                                                          all_six_plastic(state.range(0) == 1));
@@ -133,6 +139,7 @@ void sizes(benchmark::internal::Benchmark* b, bool with_elastic) {
 }
 BENCHMARK(Fixed)->ArgNames({"joints", "split"})->Apply([](auto* b) { sizes(b, false); });
 BENCHMARK(Plascap)->ArgNames({"elastic", "joints", "split"})->Apply([](auto* b) { sizes(b, true); });
+BENCHMARK(PlascapCold)->ArgNames({"elastic", "joints", "split"})->Apply([](auto* b) { sizes(b, true); });
 BENCHMARK(Spring2)->ArgNames({"elastic", "joints", "split"})->Apply([](auto* b) { sizes(b, true); });
 
 // Box against coupled yield: the cases of joint_yield_settings.hpp, 1,000 joints, one solve.

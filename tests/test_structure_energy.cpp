@@ -1,7 +1,8 @@
 // The energy ledger over random small frames (docs/structures.md, "Energy"): a joint law that never
 // creates energy keeps the ledger's remainder — kinetic + gravitational + elastic + dissipated − work
 // of the loads — at or below zero (the solver's slack only takes energy); here within +2 % of the
-// energy handled. Random trees of 2 to 4 members of standard shapes (S355), 1 to 4 segments each,
+// energy handled (less what Bullet's split-impulse position corrections did, which the ledger
+// measures apart). Random trees of 2 to 4 members of standard shapes (S355), 1 to 4 segments each,
 // fixed at the first node, under gravity and one random force (8 to 60 kN, ramped on over 0.3 s), for 0.6 s,
 // on Bullet and ODE.
 //
@@ -81,15 +82,18 @@ TEST(StructureEnergy, RandomFramesCreateNoEnergy) {
         for (const auto& [engine, euler_rows] : {std::pair{"bullet", false}, std::pair{"ode", true}}) {
             const FrameRun r = run_frame(scene, engine);
             const EnergyLedger& l = r.energy;
-            std::printf("frame %d %s: dissipated %.2f, remainder %+.3f of %.0f J; closest to the singular twist %.1f deg\n", frame,
-                        engine, l.dissipated / l.handled, l.remainder() / l.handled, l.handled, r.closest_to_singular * 180 / M_PI);
+            std::printf("frame %d %s: dissipated %.2f, remainder %+.3f (position corrections %+.3f) of %.0f J; closest to the singular twist %.1f deg\n",
+                        frame, engine, l.dissipated / l.handled, l.remainder() / l.handled, l.corrections / l.handled, l.handled,
+                        r.closest_to_singular * 180 / M_PI);
             if (euler_rows && r.closest_to_singular < 10 * M_PI / 180) {
                 ++singular;
                 continue;
             }
             ++checked;
             if (l.dissipated > 0.1 * l.handled) ++yielded;
-            EXPECT_LE(l.remainder(), 0.02 * l.handled) << "frame " << frame << " on " << engine << ": " << json;
+            // Bullet's split-impulse position corrections do work outside the velocity solve, where
+            // the joints act; the ledger measures it (energy_ledger.hpp) and it is left out here.
+            EXPECT_LE(l.remainder() - l.corrections, 0.02 * l.handled) << "frame " << frame << " on " << engine << ": " << json;
         }
     }
     // The property must have been tried where it matters: on frames that yielded substantially.

@@ -52,6 +52,7 @@ void EnergyAccount::after_step(SceneEngine& engine, const std::vector<AppliedLoa
         l.external_work += dot(a.force, difference(world_point(s, a.local), a.point)) +
                            dot(a.moment, s.angular_velocity) * scene_.dt;
     }
+    l.corrections = engine.correction_work();
     l.handled = std::max({l.handled, std::abs(l.kinetic), std::abs(l.gravitational), std::abs(l.elastic),
                           std::abs(l.dissipated), std::abs(l.external_work)});
 }

@@ -38,6 +38,9 @@ public:
     // What the engine reported as going wrong but survived (e.g. ODE's "LCP internal error"): the
     // results may be unreliable. An engine error it cannot survive is thrown as std::runtime_error.
     virtual std::vector<std::string> warnings() const { return {}; }
+    // The work the engine's position corrections did outside its velocity solve (Bullet's split
+    // impulses), summed over the run [J]; 0 for engines that correct positions in their velocities.
+    virtual double correction_work() const { return 0.0; }
 };
 
 // The engines this build has, by --engine name.

@@ -46,7 +46,9 @@ void write_energy(std::ostream& out, const EnergyLedger& e) {
         << e.elastic << ", dissipated " << e.dissipated << ", external work " << e.external_work << ", initial " << e.initial
         << "; remainder (contacts, solver) " << e.remainder() << " = " << std::setprecision(3)
         << (e.handled > 0 ? 100.0 * e.remainder() / e.handled : 0.0) << " % of the " << std::setprecision(6) << e.handled
-        << " J handled\n";
+        << " J handled";
+    if (e.corrections != 0.0) out << ", of which position corrections " << e.corrections;
+    out << '\n';
 }
 
 void write_nodes(std::ostream& out, const Scene& scene, const SimulationResult& r) {
@@ -95,7 +97,7 @@ void write_json_summary(std::ostream& out, const Scene& scene, const SimulationR
     const EnergyLedger& e = r.energy;
     j["energy"] = {{"kinetic", e.kinetic},         {"gravitational", e.gravitational}, {"elastic", e.elastic},
                    {"dissipated", e.dissipated},   {"external_work", e.external_work}, {"initial", e.initial},
-                   {"remainder", e.remainder()},   {"handled", e.handled}};
+                   {"remainder", e.remainder()},   {"corrections", e.corrections}, {"handled", e.handled}};
     out << j.dump(2) << '\n';
 }
 

@@ -28,15 +28,17 @@ void BulletPlasticConstraint::free_row(std::size_t i) {
 
 void BulletPlasticConstraint::lock_row(std::size_t i, double at) {
     if (rows_[i].kind == RowKind::None) ++row_count_;
-    rows_[i] = {RowKind::Lock, at, 0.0, 0.0};
+    rows_[i].kind = RowKind::Lock;
+    rows_[i].target = at;
 }
 
 void BulletPlasticConstraint::command_row(std::size_t i, const RowCommand& c) {
     if (rows_[i].kind == RowKind::None) ++row_count_;
+    Row& row = rows_[i];  // keeps the force it carried, for the warm start
     if (c.kind == RowCommand::Kind::Hold) {
-        rows_[i] = {RowKind::Hold, c.velocity, c.lower, c.upper};
+        row.kind = RowKind::Hold, row.target = c.velocity, row.lower = c.lower, row.upper = c.upper;
     } else {
-        rows_[i] = {RowKind::Push, 0.0, c.force, c.force};
+        row.kind = RowKind::Push, row.target = 0.0, row.lower = c.force, row.upper = c.force;
     }
 }
 
@@ -76,7 +78,7 @@ void BulletPlasticConstraint::getInfo2(btConstraintInfo2* info) {
     const double turn = 2.0 * std::acos(-1.0);
     int r = 0;
     for (std::size_t i = 0; i < rows_.size(); ++i) {
-        const Row& row = rows_[i];
+        Row& row = rows_[i];
         if (row.kind == RowKind::None) continue;
         const int at = r * info->rowskip;  // the Jacobians' and the row scalars' stride
         // J·v = the dof's rate: +axis on b, −axis on a; a translation row acts at b's anchor.
@@ -91,28 +93,33 @@ void BulletPlasticConstraint::getInfo2(btConstraintInfo2* info) {
             store(info->m_J1angularAxis + at, -axis);
             store(info->m_J2angularAxis + at, axis);
         }
+        // Lock and Hold rows hold a rate of 0 but for their position correction; a Push row's
+        // bounds are its force.
+        row.correction = 0.0;
         switch (row.kind) {
             case RowKind::Lock: {
                 double error = row.target - s.positions[i];
                 if (i >= 3) error = std::remainder(error, turn);  // angles: the short way round
-                info->m_constraintError[at] = erp * info->fps * error;
+                row.correction = erp * info->fps * error;
                 info->cfm[at] = stop_cfm_;
                 break;
             }
-            case RowKind::Hold:  // bounds are impulses over the step
-                info->m_constraintError[at] = row.target;
+            case RowKind::Hold:  // the law's rate is its correction; bounds are impulses over the step
+                row.correction = row.target;
                 info->m_lowerLimit[at] = row.lower / info->fps;
                 info->m_upperLimit[at] = row.upper / info->fps;
                 break;
             case RowKind::Push:
-                info->m_constraintError[at] = 0.0;
                 info->m_lowerLimit[at] = row.lower / info->fps;
                 info->m_upperLimit[at] = row.upper / info->fps;
                 break;
             case RowKind::None: break;
         }
+        info->m_constraintError[at] = split_corrections_ ? 0.0 : row.correction;
+        written_dof_[static_cast<std::size_t>(r)] = i;
         ++r;
     }
+    written_ = static_cast<std::size_t>(r);
 }
 
 void BulletPlasticConstraint::setParam(int num, btScalar value, int) {

@@ -4,15 +4,27 @@
 
 namespace plascap {
 
-BulletWorld::BulletWorld(const btVector3& gravity, int iterations)
+namespace {
+
+std::unique_ptr<btSequentialImpulseConstraintSolver> make_solver(BulletSolverKind kind) {
+    if (kind == BulletSolverKind::Bullet) return std::make_unique<btSequentialImpulseConstraintSolver>();
+    return std::make_unique<BulletPlasticSolver>();
+}
+
+}  // namespace
+
+BulletWorld::BulletWorld(const btVector3& gravity, int iterations, BulletSolverKind solver)
     : configuration_(std::make_unique<btDefaultCollisionConfiguration>()),
       dispatcher_(std::make_unique<btCollisionDispatcher>(configuration_.get())),
       broadphase_(std::make_unique<btDbvtBroadphase>()),
-      solver_(std::make_unique<btSequentialImpulseConstraintSolver>()),
+      solver_(make_solver(solver)),
       world_(std::make_unique<btDiscreteDynamicsWorld>(dispatcher_.get(), broadphase_.get(), solver_.get(),
                                                         configuration_.get())) {
+    if (solver == BulletSolverKind::Plascap) plascap_solver_ = static_cast<const BulletPlasticSolver*>(solver_.get());
     world_->setGravity(gravity);
     world_->getSolverInfo().m_numIterations = iterations;
+    // Split-impulse turns at full rate: plascap's rows correct their rotations' drift by them.
+    world_->getSolverInfo().m_splitImpulseTurnErp = 1.0;
 }
 
 BulletWorld::~BulletWorld() = default;

@@ -21,7 +21,7 @@
 
 namespace plascap {
 
-class BulletPlasticConstraint : public btTypedConstraint {
+class BulletPlasticConstraint final : public btTypedConstraint {
 public:
     static constexpr RowCapabilities kRows{RotationMeasure::SwingTwist, true};
 
@@ -38,6 +38,21 @@ public:
     // anchor in the world. Recomputed only when a body has moved since the last call.
     const JointFrameState& measure();
 
+    // Set by BulletPlasticSolver before each solve: when on, the rows' velocity targets leave out
+    // their position corrections (Baumgarte), which the solver applies as split-impulse pushes
+    // instead; correction_rate(k) gives each written row's correction [m/s | rad/s].
+    void split_corrections(bool on) { split_corrections_ = on; }
+    double correction_rate(std::size_t k) const { return k < written_ ? rows_[written_dof_[k]].correction : 0.0; }
+    // Whether the k-th written row holds a position (Lock, Hold) and so takes part in the pushes; a
+    // Push row applies its force and nothing else.
+    bool holds_position(std::size_t k) const { return k < written_ && rows_[written_dof_[k]].kind != RowKind::Push; }
+    // The force the k-th row written by the last getInfo2 carried when its step was solved (0 before
+    // the first) [N | N·m], for BulletPlasticSolver's warm start; and the solver's report of it.
+    double carried_force(std::size_t k) const { return k < written_ ? rows_[written_dof_[k]].carried : 0.0; }
+    void carry_force(std::size_t k, double force) {
+        if (k < written_) rows_[written_dof_[k]].carried = force;
+    }
+
     void getInfo1(btConstraintInfo1* info) override;
     void getInfo2(btConstraintInfo2* info) override;
     // BT_CONSTRAINT_STOP_ERP / BT_CONSTRAINT_STOP_CFM set the locked rows' error reduction (default:
@@ -52,11 +67,16 @@ private:
         RowKind kind = RowKind::None;
         double target = 0.0;  // Lock: position; Hold: rate
         double lower = 0.0, upper = 0.0;  // Hold and Push: force range on b [N | N·m]
+        double correction = 0.0;          // the position-correction rate last written
+        double carried = 0.0;             // the force it carried in the last solved step
     };
 
     btTransform frame_in_a_, frame_in_b_;
     std::array<Row, 6> rows_{};
     int row_count_ = 0;
+    std::array<std::size_t, 6> written_dof_{};  // the dof of each row the last getInfo2 wrote
+    std::size_t written_ = 0;
+    bool split_corrections_ = false;
     btScalar stop_erp_ = -1.0;  // < 0: the world's
     btScalar stop_cfm_ = 0.0;
     // The measurement and the body poses it was made at.

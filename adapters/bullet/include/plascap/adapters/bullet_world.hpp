@@ -1,6 +1,7 @@
 #pragma once
 // A Bullet dynamics world with everything it owns (collision configuration, dispatcher, broadphase,
-// sequential-impulse solver), and a box body. Installed on purpose: a program that only wants plastic
+// sequential-impulse solver — BulletPlasticSolver, which warm-starts plascap's rows and corrects
+// their drift by split impulses), and a box body. Installed on purpose: a program that only wants plastic
 // joints in a plain world needs nothing more (examples/consumer/bullet_main.cpp), and plascap's
 // tools, tests and benchmarks use the same. Bodies and constraints stay owned by the caller, and a
 // body joins the world only through world().addRigidBody().
@@ -8,17 +9,26 @@
 
 #include <memory>
 
+#include "plascap/adapters/bullet_plastic_solver.hpp"
+
 namespace plascap {
+
+// The world's constraint solver: plascap's (warm-started rows, split-impulse corrections) or
+// Bullet's own btSequentialImpulseConstraintSolver (every joint row cold, Baumgarte in its velocity).
+enum class BulletSolverKind { Plascap, Bullet };
 
 class BulletWorld {
 public:
     // gravity [m/s²] in world coordinates; iterations: the solver's iterations per step.
-    BulletWorld(const btVector3& gravity, int iterations);
+    BulletWorld(const btVector3& gravity, int iterations, BulletSolverKind solver = BulletSolverKind::Plascap);
     ~BulletWorld();
     BulletWorld(const BulletWorld&) = delete;
     BulletWorld& operator=(const BulletWorld&) = delete;
 
     btDiscreteDynamicsWorld& world() { return *world_; }
+    // The work of the split-impulse position corrections so far (BulletPlasticSolver::correction_work;
+    // 0 with Bullet's own solver) [J].
+    double correction_work() const { return plascap_solver_ ? plascap_solver_->correction_work() : 0.0; }
     // One fixed step of dt seconds (no interpolation sub-steps).
     void step(double dt);
 
@@ -27,6 +37,7 @@ private:
     std::unique_ptr<btCollisionDispatcher> dispatcher_;
     std::unique_ptr<btDbvtBroadphase> broadphase_;
     std::unique_ptr<btSequentialImpulseConstraintSolver> solver_;
+    const BulletPlasticSolver* plascap_solver_ = nullptr;  // solver_, when it is plascap's
     std::unique_ptr<btDiscreteDynamicsWorld> world_;
 };
 

@@ -1,0 +1,57 @@
+#pragma once
+// Bullet's sequential-impulse solver, made for plascap's rows: it warm-starts them and corrects
+// their drift by split impulses.
+//   Warm start: Bullet warm-starts contacts from the last step's impulses but starts every joint row
+//   from zero (btSequentialImpulseConstraintSolver::convertJoint), so a chain of joints under a
+//   sustained load re-solves its whole load each step and sags by what the iterations leave
+//   unconverged. Here each row of a BulletPlasticConstraint starts from the force it carried the
+//   step before, clamped to its bounds this step and applied to the bodies as Bullet applies a
+//   contact's warm start.
+//   Split impulses: a row's position correction (its Baumgarte rate) is not part of its velocity
+//   target but solved apart, as Bullet does for contacts' penetration (m_splitImpulse): pushes that
+//   move the bodies this step and leave no velocity behind. Warm-starting rows whose impulses carry
+//   their corrections feeds those corrections back step after step — on the example beam at 100
+//   iterations a growing oscillation that folded it (docs/adapters.md, "Bullet's solver") — and the
+//   correction's velocity would remain as kinetic energy.
+// The pushes are integrated by Bullet only with m_splitImpulse on (its default); their rotations are
+// scaled by m_splitImpulseTurnErp (default 0.1, BulletWorld sets 1). Use this solver as the world's
+// constraint solver (BulletWorld does); with any other solver plascap's joints work, cold-started,
+// with Baumgarte in their rows.
+#include <btBulletDynamicsCommon.h>
+
+#include <vector>
+
+namespace plascap {
+
+class BulletPlasticConstraint;
+
+class BulletPlasticSolver : public btSequentialImpulseConstraintSolver {
+public:
+    // The work the split-impulse pushes (plascap's rows' and contacts') have done on the bodies
+    // against the forces applied to them (gravity and loads), summed over every solve [J]: the
+    // energy the position corrections put in — positive when they lift a load back to where its
+    // joints hold it. An energy ledger books it apart from the joints' work.
+    double correction_work() const { return correction_work_; }
+
+protected:
+    void convertJoints(btTypedConstraint** constraints, int count, const btContactSolverInfo& info) override;
+    void solveGroupCacheFriendlySplitImpulseIterations(btCollisionObject** bodies, int body_count,
+                                                       btPersistentManifold** manifolds, int manifold_count,
+                                                       btTypedConstraint** constraints, int constraint_count,
+                                                       const btContactSolverInfo& info, btIDebugDraw* drawer) override;
+    btScalar solveGroupCacheFriendlyFinish(btCollisionObject** bodies, int count, const btContactSolverInfo& info) override;
+
+private:
+    struct PlascapRow {
+        int row;  // in m_tmpSolverNonContactConstraintPool
+        BulletPlasticConstraint* constraint;
+        std::size_t k;  // the constraint's k-th written row
+    };
+    std::vector<PlascapRow> rows_;  // this solve's
+    std::vector<int> pushed_;       // those that hold a position: their pool indices
+    std::vector<BulletPlasticConstraint*> plascap_;  // per constraint of this solve; nullptr: not plascap's
+    double largest_correction_ = 0.0;                // of the pushed rows' rates [m/s | rad/s]
+    double correction_work_ = 0.0;
+};
+
+}  // namespace plascap

@@ -1,0 +1,123 @@
+#include "plascap/adapters/bullet_plastic_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <typeinfo>
+
+#include "plascap/adapters/bullet_plastic_constraint.hpp"
+
+namespace plascap {
+namespace {
+
+// The class is final, so its exact type identifies it (cheaper than a dynamic_cast).
+BulletPlasticConstraint* plascap_constraint(btTypedConstraint* constraint) {
+    if (constraint->getConstraintType() != MAX_CONSTRAINT_TYPE || typeid(*constraint) != typeid(BulletPlasticConstraint))
+        return nullptr;
+    return static_cast<BulletPlasticConstraint*>(constraint);
+}
+
+// The push iterations stop once no row's push changes its rate by more than this [m/s | rad/s]:
+// a millionth of a millimetre per millisecond step, far below any correction worth making.
+constexpr btScalar kPushConverged = 1e-6;
+
+// One projected Gauss–Seidel step of a row's push (as Bullet's resolveSplitPenetrationImpulse does
+// for a contact), within the row's bounds; returns the change of the row's rate it made.
+btScalar resolve_push(btSolverBody& a, btSolverBody& b, btSolverConstraint& row) {
+    btScalar delta = row.m_rhsPenetration;
+    delta -= (row.m_contactNormal1.dot(a.internalGetPushVelocity()) + row.m_relpos1CrossNormal.dot(a.internalGetTurnVelocity())) *
+             row.m_jacDiagABInv;
+    delta -= (row.m_contactNormal2.dot(b.internalGetPushVelocity()) + row.m_relpos2CrossNormal.dot(b.internalGetTurnVelocity())) *
+             row.m_jacDiagABInv;
+    const btScalar sum = std::clamp<btScalar>(row.m_appliedPushImpulse + delta, row.m_lowerLimit, row.m_upperLimit);
+    delta = sum - row.m_appliedPushImpulse;
+    row.m_appliedPushImpulse = sum;
+    a.internalApplyPushImpulse(row.m_contactNormal1 * a.internalGetInvMass(), row.m_angularComponentA, delta);
+    b.internalApplyPushImpulse(row.m_contactNormal2 * b.internalGetInvMass(), row.m_angularComponentB, delta);
+    return row.m_jacDiagABInv > 0.0 ? std::abs(delta) / row.m_jacDiagABInv : 0.0;
+}
+
+}  // namespace
+
+void BulletPlasticSolver::convertJoints(btTypedConstraint** constraints, int count, const btContactSolverInfo& info) {
+    const bool split = info.m_splitImpulse != 0;
+    plascap_.assign(static_cast<std::size_t>(count), nullptr);
+    for (int i = 0; i < count; ++i) {
+        if (BulletPlasticConstraint* c = plascap_constraint(constraints[i])) {
+            c->split_corrections(split);
+            plascap_[static_cast<std::size_t>(i)] = c;
+        }
+    }
+    btSequentialImpulseConstraintSolver::convertJoints(constraints, count, info);
+    // This solve's plascap rows: Bullet lays each constraint's rows out in turn, in the order its
+    // getInfo2 wrote them.
+    rows_.clear();
+    pushed_.clear();
+    largest_correction_ = 0.0;
+    int at = 0;
+    for (int i = 0; i < count; ++i) {
+        const int n = m_tmpConstraintSizesPool[i].m_numConstraintRows;
+        if (BulletPlasticConstraint* c = plascap_[static_cast<std::size_t>(i)]) {
+            for (int k = 0; k < n; ++k) rows_.push_back({at + k, c, static_cast<std::size_t>(k)});
+        }
+        at += n;
+    }
+    for (const PlascapRow& r : rows_) {
+        // A Push row's bounds are its force: its first iteration applies it, warm start or not.
+        if (!r.constraint->holds_position(r.k)) continue;
+        btSolverConstraint& row = m_tmpSolverNonContactConstraintPool[r.row];
+        if (split) {
+            const double rate = r.constraint->correction_rate(r.k);
+            row.m_rhsPenetration = rate * row.m_jacDiagABInv;
+            largest_correction_ = std::max(largest_correction_, std::abs(rate));
+            pushed_.push_back(r.row);
+        }
+        // The warm start, as resolveSingleConstraintRowGeneric applies an impulse.
+        const btScalar impulse =
+            std::clamp<btScalar>(r.constraint->carried_force(r.k) * info.m_timeStep, row.m_lowerLimit, row.m_upperLimit);
+        if (impulse == 0.0) continue;
+        row.m_appliedImpulse = impulse;
+        btSolverBody& a = m_tmpSolverBodyPool[row.m_solverBodyIdA];
+        btSolverBody& b = m_tmpSolverBodyPool[row.m_solverBodyIdB];
+        a.internalApplyImpulse(row.m_contactNormal1 * a.internalGetInvMass(), row.m_angularComponentA, impulse);
+        b.internalApplyImpulse(row.m_contactNormal2 * b.internalGetInvMass(), row.m_angularComponentB, impulse);
+    }
+}
+
+void BulletPlasticSolver::solveGroupCacheFriendlySplitImpulseIterations(
+    btCollisionObject** bodies, int body_count, btPersistentManifold** manifolds, int manifold_count,
+    btTypedConstraint** constraints, int constraint_count, const btContactSolverInfo& info, btIDebugDraw* drawer) {
+    btSequentialImpulseConstraintSolver::solveGroupCacheFriendlySplitImpulseIterations(
+        bodies, body_count, manifolds, manifold_count, constraints, constraint_count, info, drawer);
+    if (!info.m_splitImpulse || largest_correction_ < kPushConverged) return;  // nothing to correct
+    // As many iterations as the velocity solve has, or fewer once converged (a structure at rest
+    // needs none: its corrections are nil).
+    for (int iteration = 0; iteration < info.m_numIterations; ++iteration) {
+        btScalar largest = 0.0;
+        for (const int i : pushed_) {
+            btSolverConstraint& row = m_tmpSolverNonContactConstraintPool[i];
+            largest = std::max(largest, resolve_push(m_tmpSolverBodyPool[row.m_solverBodyIdA], m_tmpSolverBodyPool[row.m_solverBodyIdB], row));
+        }
+        if (largest < kPushConverged) break;
+    }
+}
+
+btScalar BulletPlasticSolver::solveGroupCacheFriendlyFinish(btCollisionObject** bodies, int count,
+                                                             const btContactSolverInfo& info) {
+    for (const PlascapRow& r : rows_) {
+        r.constraint->carry_force(r.k, m_tmpSolverNonContactConstraintPool[r.row].m_appliedImpulse / info.m_timeStep);
+    }
+    if (info.m_splitImpulse) {
+        // A push moves a body by δ = v_push·h (and turns it by ω_turn·turnErp·h, as Bullet integrates
+        // it) without a velocity: the forces on it do F·δ of work that no row did.
+        for (int i = 0; i < m_tmpSolverBodyPool.size(); ++i) {
+            const btSolverBody& body = m_tmpSolverBodyPool[i];
+            if (body.m_originalBody == nullptr) continue;
+            const btVector3 shift = body.m_pushVelocity * info.m_timeStep;
+            const btVector3 turn = body.m_turnVelocity * (info.m_splitImpulseTurnErp * info.m_timeStep);
+            correction_work_ -= body.m_originalBody->getTotalForce().dot(shift) + body.m_originalBody->getTotalTorque().dot(turn);
+        }
+    }
+    return btSequentialImpulseConstraintSolver::solveGroupCacheFriendlyFinish(bodies, count, info);
+}
+
+}  // namespace plascap
