@@ -27,20 +27,29 @@ double seconds_per_step(Step&& step, int joints) {
     return batches[2];
 }
 
-// Runs the benchmark loop over `step`, timing it, and sets the counters: vs_rigid (this step's time
-// over `rigid` seconds) and ns_per_joint.
+// Runs the benchmark loop over `step`; returns its seconds per step.
 template <class Step>
-void time_steps(benchmark::State& state, Step&& step, double rigid, int joints) {
+double timed_loop(benchmark::State& state, Step&& step) {
     const auto start = std::chrono::steady_clock::now();
     for (auto _ : state) step();
-    const double own = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() /
-                       static_cast<double>(state.iterations());
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() /
+           static_cast<double>(state.iterations());
+}
+
+// Runs and times the loop over `step`, and sets the counters: vs_rigid (this step's time over
+// `rigid` seconds) and ns_per_joint.
+inline void set_counters(benchmark::State& state, double own, double rigid, int joints) {
     state.counters["vs_rigid"] = own / rigid;
     state.counters["ns_per_joint"] = own / joints * 1e9;
 }
 
+template <class Step>
+void time_steps(benchmark::State& state, Step&& step, double rigid, int joints) {
+    set_counters(state, timed_loop(state, step), rigid, joints);
+}
+
 // The rigid baseline's seconds per step for each (joints, setting): what the baseline benchmark
-// itself last measured (record_baseline), or, when a filter left it out, measured once here.
+// itself last measured (time_baseline), or, when a filter left it out, measured once here.
 inline std::map<std::pair<int, int>, double>& baselines() {
     static std::map<std::pair<int, int>, double> seen;
     return seen;
@@ -56,13 +65,8 @@ double cached_baseline(int joints, int setting, Measure&& measure) {
 // Runs the rigid baseline's own benchmark loop and keeps its time for the variants after it.
 template <class Step>
 void time_baseline(benchmark::State& state, Step&& step, int joints, int setting) {
-    const auto start = std::chrono::steady_clock::now();
-    for (auto _ : state) step();
-    const double own = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() /
-                       static_cast<double>(state.iterations());
-    baselines()[std::pair{joints, setting}] = own;
-    state.counters["vs_rigid"] = 1.0;
-    state.counters["ns_per_joint"] = own / joints * 1e9;
+    const double own = baselines()[std::pair{joints, setting}] = timed_loop(state, step);
+    set_counters(state, own, own, joints);
 }
 
 }  // namespace bench

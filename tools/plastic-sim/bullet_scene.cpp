@@ -1,5 +1,7 @@
 // A Scene in Bullet: boxes as btRigidBody, joints as BulletPlasticJoint.
 #include <memory>
+
+#include <BulletCollision/CollisionDispatch/btSimulationIslandManager.h>
 #include <vector>
 
 #include "plascap/adapters/bullet_plastic_joint.hpp"
@@ -27,6 +29,10 @@ class BulletScene : public SceneEngine {
 public:
     BulletScene(const Scene& scene, const char* constraint)
         : scene_(scene), constraint_(constraint), world_(bt(scene.gravity), scene.iterations), schedule_(scene) {
+        // One solve for the world: Bullet's per-island solve finds each island's constraints by
+        // scanning all of them, O(n²) per step (docs/adapters.md, "Cost"); the islands do not
+        // interact, so one solve gives them the same rows.
+        world_.world().getSimulationIslandManager()->setSplitIslands(false);
         for (const SceneBody& b : scene.bodies) {
             const btQuaternion q(b.orientation[1], b.orientation[2], b.orientation[3], b.orientation[0]);
             const btVector3 inertia = b.inertia ? bt(*b.inertia) : btVector3(0, 0, 0);

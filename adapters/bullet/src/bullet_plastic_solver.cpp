@@ -17,23 +17,23 @@ BulletPlasticConstraint* plascap_constraint(btTypedConstraint* constraint) {
 }
 
 // The push iterations stop once no row's push changes its rate by more than this [m/s | rad/s]:
-// a millionth of a millimetre per millisecond step, far below any correction worth making.
+// a micrometre per second; what is left is corrected the next step.
 constexpr btScalar kPushConverged = 1e-6;
 
 // One projected Gauss–Seidel step of a row's push (as Bullet's resolveSplitPenetrationImpulse does
-// for a contact), within the row's bounds; returns the change of the row's rate it made.
+// for a contact), within the row's bounds; returns |the impulse change| / the row's effective mass
+// is the rate change it made.
 btScalar resolve_push(btSolverBody& a, btSolverBody& b, btSolverConstraint& row) {
     btScalar delta = row.m_rhsPenetration;
-    delta -= (row.m_contactNormal1.dot(a.internalGetPushVelocity()) + row.m_relpos1CrossNormal.dot(a.internalGetTurnVelocity())) *
-             row.m_jacDiagABInv;
-    delta -= (row.m_contactNormal2.dot(b.internalGetPushVelocity()) + row.m_relpos2CrossNormal.dot(b.internalGetTurnVelocity())) *
+    delta -= (row.m_contactNormal1.dot(a.internalGetPushVelocity()) + row.m_relpos1CrossNormal.dot(a.internalGetTurnVelocity()) +
+              row.m_contactNormal2.dot(b.internalGetPushVelocity()) + row.m_relpos2CrossNormal.dot(b.internalGetTurnVelocity())) *
              row.m_jacDiagABInv;
     const btScalar sum = std::clamp<btScalar>(row.m_appliedPushImpulse + delta, row.m_lowerLimit, row.m_upperLimit);
     delta = sum - row.m_appliedPushImpulse;
     row.m_appliedPushImpulse = sum;
     a.internalApplyPushImpulse(row.m_contactNormal1 * a.internalGetInvMass(), row.m_angularComponentA, delta);
     b.internalApplyPushImpulse(row.m_contactNormal2 * b.internalGetInvMass(), row.m_angularComponentB, delta);
-    return row.m_jacDiagABInv > 0.0 ? std::abs(delta) / row.m_jacDiagABInv : 0.0;
+    return std::abs(delta);
 }
 
 }  // namespace
@@ -69,7 +69,7 @@ void BulletPlasticSolver::convertJoints(btTypedConstraint** constraints, int cou
             const double rate = r.constraint->correction_rate(r.k);
             row.m_rhsPenetration = rate * row.m_jacDiagABInv;
             largest_correction_ = std::max(largest_correction_, std::abs(rate));
-            pushed_.push_back(r.row);
+            pushed_.push_back({r.row, row.m_jacDiagABInv > 0.0 ? 1.0 / row.m_jacDiagABInv : 0.0});
         }
         // The warm start, as resolveSingleConstraintRowGeneric applies an impulse.
         const btScalar impulse =
@@ -91,11 +91,12 @@ void BulletPlasticSolver::solveGroupCacheFriendlySplitImpulseIterations(
     if (!info.m_splitImpulse || largest_correction_ < kPushConverged) return;  // nothing to correct
     // As many iterations as the velocity solve has, or fewer once converged (a structure at rest
     // needs none: its corrections are nil).
-    for (int iteration = 0; iteration < info.m_numIterations; ++iteration) {
-        btScalar largest = 0.0;
-        for (const int i : pushed_) {
-            btSolverConstraint& row = m_tmpSolverNonContactConstraintPool[i];
-            largest = std::max(largest, resolve_push(m_tmpSolverBodyPool[row.m_solverBodyIdA], m_tmpSolverBodyPool[row.m_solverBodyIdB], row));
+    for (int iteration = 0; iteration < push_iterations(info); ++iteration) {
+        btScalar largest = 0.0;  // of the impulse changes over the effective masses: rate changes
+        for (const Pushed& p : pushed_) {
+            btSolverConstraint& row = m_tmpSolverNonContactConstraintPool[p.row];
+            largest = std::max(largest, resolve_push(m_tmpSolverBodyPool[row.m_solverBodyIdA], m_tmpSolverBodyPool[row.m_solverBodyIdB], row) *
+                                            p.rate_per_impulse);
         }
         if (largest < kPushConverged) break;
     }

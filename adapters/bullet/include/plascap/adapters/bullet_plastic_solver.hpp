@@ -19,6 +19,7 @@
 // with Baumgarte in their rows.
 #include <btBulletDynamicsCommon.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace plascap {
@@ -48,7 +49,14 @@ private:
         std::size_t k;  // the constraint's k-th written row
     };
     std::vector<PlascapRow> rows_;  // this solve's
-    std::vector<int> pushed_;       // those that hold a position: their pool indices
+    struct Pushed {
+        int row;                  // in m_tmpSolverNonContactConstraintPool
+        double rate_per_impulse;  // J·M⁻¹·Jᵀ
+    };
+    std::vector<Pushed> pushed_;  // those that hold a position
+    // The push iterations per solve: half the velocity solve's (the corrections need not converge
+    // in one step; what is left is corrected in the next).
+    static int push_iterations(const btContactSolverInfo& info) { return std::max(1, info.m_numIterations / 2); }
     std::vector<BulletPlasticConstraint*> plascap_;  // per constraint of this solve; nullptr: not plascap's
     double largest_correction_ = 0.0;                // of the pushed rows' rates [m/s | rad/s]
     double correction_work_ = 0.0;
