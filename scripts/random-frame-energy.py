@@ -2,7 +2,8 @@
 """Diagnostic (docs/structures.md, "Known limits"; the property test is tests/test_structure_energy.cpp): random small frames —
 3 to 5 nodes in a box of 4 x 3 x 1 m, a tree of members of random standard shapes (S355) and 1 to 4
 segments, fixed at the first node, gravity and one ramped random force — run on Bullet and ODE; prints
-the energy ledger's remainder as a share of the energy handled, and the dissipated energy. A joint law
+the energy ledger's remainder as a share of the energy handled, the part of it Bullet's position
+corrections did, and the dissipated energy. A joint law
 that never creates energy keeps the remainder at or below 0 (the solver's slack only takes energy)
 and the dissipated energy at or above 0.
 Usage: scripts/random-frame-energy.py [SEED] [FRAMES] [coupled|box]   (after scripts/build.sh)."""
@@ -32,7 +33,7 @@ def main():
     count = int(sys.argv[2]) if len(sys.argv) > 2 else 6
     yield_surface = sys.argv[3] if len(sys.argv) > 3 else "coupled"
     rng = random.Random(seed)
-    print("frame engine remainder/handled handled[J] dissipated[J]")
+    print("frame engine remainder/handled corrections/handled handled[J] dissipated[J]")
     for k in range(count):
         scene = frame(rng, yield_surface)
         for engine in ["bullet", "ode"]:
@@ -41,7 +42,9 @@ def main():
                 print(k, engine, "error:", run.stderr.strip()[:200])
                 continue
             e = json.loads(run.stdout)["energy"]
-            print(k, engine, "%+.3f" % (e["remainder"] / max(e["handled"], 1e-9)), "%.0f" % e["handled"], "%.0f" % e["dissipated"])
+            scale = max(e["handled"], 1e-9)
+            print(k, engine, "%+.3f" % (e["remainder"] / scale), "%+.3f" % (e.get("corrections", 0.0) / scale),
+                  "%.0f" % e["handled"], "%.0f" % e["dissipated"])
 
 
 if __name__ == "__main__":
