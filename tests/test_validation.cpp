@@ -87,6 +87,24 @@ TEST(Validation, SelfIntersectingRingNamesTheEdges) {
     EXPECT_NE(touch.find("is self-intersecting"), std::string::npos) << touch;
 }
 
+TEST(Validation, RingsThatTurnOneWayButWindTwiceAreSelfIntersecting) {
+    // Every turn of a pentagram, and of a spiral twice round, is a left turn — locally convex — yet
+    // they cross themselves: the convex fast path of the simplicity test must not take them.
+    plascap::Ring star, spiral;
+    for (int i = 0; i < 5; ++i) {
+        const double a = 4.0 * M_PI * i / 5.0;
+        star.push_back({std::cos(a), std::sin(a)});
+    }
+    for (int i = 0; i < 10; ++i) {
+        const double a = 4.0 * M_PI * i / 10.0 + 0.1, r = 1.0 + 0.01 * i;
+        spiral.push_back({r * std::cos(a), r * std::sin(a)});
+    }
+    for (const auto& ring : {star, spiral}) {
+        const std::string message = refusal(section_of({part(ring, 1e8)}));
+        EXPECT_NE(message.find("is self-intersecting"), std::string::npos) << message;
+    }
+}
+
 TEST(Validation, HoleOutsideItsOuterRing) {
     EXPECT_REFUSED(section_of({part(box(0, 0, 1, 1), 1e8, {box(2, 2, 3, 3)})}),
                    "part 0, hole 0, vertex 0: lies outside its outer ring; holes must lie strictly inside it");

@@ -21,8 +21,8 @@ BulletPlasticConstraint* plascap_constraint(btTypedConstraint* constraint) {
 constexpr btScalar kPushConverged = 1e-6;
 
 // One projected Gauss–Seidel step of a row's push (as Bullet's resolveSplitPenetrationImpulse does
-// for a contact), within the row's bounds; returns |the impulse change| / the row's effective mass
-// is the rate change it made.
+// for a contact), within the row's bounds; returns |the push impulse's change| (times J·M⁻¹·Jᵀ, the
+// change of the row's push rate).
 btScalar resolve_push(btSolverBody& a, btSolverBody& b, btSolverConstraint& row) {
     btScalar delta = row.m_rhsPenetration;
     delta -= (row.m_contactNormal1.dot(a.internalGetPushVelocity()) + row.m_relpos1CrossNormal.dot(a.internalGetTurnVelocity()) +
