@@ -10,6 +10,8 @@ namespace {
 Vec3 to_vec3(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
 btVector3 to_bt(const Vec3& v) { return {btScalar(v[0]), btScalar(v[1]), btScalar(v[2])}; }
 
+constexpr double kTurn = 2.0 * 3.14159265358979323846;  // [rad]
+
 void store(btScalar* at, const btVector3& v) {
     at[0] = v.x(), at[1] = v.y(), at[2] = v.z();
 }
@@ -75,7 +77,6 @@ void BulletPlasticConstraint::getInfo2(btConstraintInfo2* info) {
     const btVector3 lever_a = anchor - m_rbA.getCenterOfMassPosition();
     const btVector3 lever_b = anchor - m_rbB.getCenterOfMassPosition();
     const btScalar erp = stop_erp_ >= 0.0 ? stop_erp_ : info->erp;
-    const double turn = 2.0 * std::acos(-1.0);
     int r = 0;
     for (std::size_t i = 0; i < rows_.size(); ++i) {
         Row& row = rows_[i];
@@ -93,27 +94,17 @@ void BulletPlasticConstraint::getInfo2(btConstraintInfo2* info) {
             store(info->m_J1angularAxis + at, -axis);
             store(info->m_J2angularAxis + at, axis);
         }
-        // Lock and Hold rows hold a rate of 0 but for their position correction; a Push row's
-        // bounds are its force.
-        row.correction = 0.0;
-        switch (row.kind) {
-            case RowKind::Lock: {
-                double error = row.target - s.positions[i];
-                if (i >= 3) error = std::remainder(error, turn);  // angles: the short way round
-                row.correction = erp * info->fps * error;
-                info->cfm[at] = stop_cfm_;
-                break;
-            }
-            case RowKind::Hold:  // the law's rate is its correction; bounds are impulses over the step
-                row.correction = row.target;
-                info->m_lowerLimit[at] = row.lower / info->fps;
-                info->m_upperLimit[at] = row.upper / info->fps;
-                break;
-            case RowKind::Push:
-                info->m_lowerLimit[at] = row.lower / info->fps;
-                info->m_upperLimit[at] = row.upper / info->fps;
-                break;
-            case RowKind::None: break;
+        // Lock and Hold rows hold a rate of 0 but for their position correction (a Hold row's rate
+        // from the law is all correction); Hold and Push rows are bounded by their force range, as
+        // impulses over the step (a Push row's range is its one force).
+        if (row.kind == RowKind::Lock) {
+            const double error = row.target - s.positions[i];
+            row.correction = erp * info->fps * (i >= 3 ? std::remainder(error, kTurn) : error);  // angles: the short way
+            info->cfm[at] = stop_cfm_;
+        } else {
+            row.correction = row.kind == RowKind::Hold ? row.target : 0.0;
+            info->m_lowerLimit[at] = row.lower / info->fps;
+            info->m_upperLimit[at] = row.upper / info->fps;
         }
         info->m_constraintError[at] = split_corrections_ ? 0.0 : row.correction;
         written_dof_[static_cast<std::size_t>(r)] = i;

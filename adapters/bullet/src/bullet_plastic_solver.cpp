@@ -49,27 +49,26 @@ void BulletPlasticSolver::convertJoints(btTypedConstraint** constraints, int cou
     }
     btSequentialImpulseConstraintSolver::convertJoints(constraints, count, info);
     // This solve's plascap rows: Bullet lays each constraint's rows out in turn, in the order its
-    // getInfo2 wrote them.
+    // getInfo2 wrote them. A Push row's bounds are its force: its first iteration applies it.
     rows_.clear();
-    pushed_.clear();
     largest_correction_ = 0.0;
     int at = 0;
     for (int i = 0; i < count; ++i) {
         const int n = m_tmpConstraintSizesPool[i].m_numConstraintRows;
         if (BulletPlasticConstraint* c = plascap_[static_cast<std::size_t>(i)]) {
-            for (int k = 0; k < n; ++k) rows_.push_back({at + k, c, static_cast<std::size_t>(k)});
+            for (std::size_t k = 0; k < static_cast<std::size_t>(n); ++k)
+                rows_.push_back({at + static_cast<int>(k), c, k, c->holds_position(k)});
         }
         at += n;
     }
-    for (const PlascapRow& r : rows_) {
-        // A Push row's bounds are its force: its first iteration applies it, warm start or not.
-        if (!r.constraint->holds_position(r.k)) continue;
+    for (PlascapRow& r : rows_) {
+        if (!r.holds_position) continue;
         btSolverConstraint& row = m_tmpSolverNonContactConstraintPool[r.row];
         if (split) {
             const double rate = r.constraint->correction_rate(r.k);
             row.m_rhsPenetration = rate * row.m_jacDiagABInv;
             largest_correction_ = std::max(largest_correction_, std::abs(rate));
-            pushed_.push_back({r.row, row.m_jacDiagABInv > 0.0 ? 1.0 / row.m_jacDiagABInv : 0.0});
+            r.rate_per_impulse = row.m_jacDiagABInv > 0.0 ? 1.0 / row.m_jacDiagABInv : 0.0;
         }
         // The warm start, as resolveSingleConstraintRowGeneric applies an impulse.
         const btScalar impulse =
@@ -89,11 +88,12 @@ void BulletPlasticSolver::solveGroupCacheFriendlySplitImpulseIterations(
     btSequentialImpulseConstraintSolver::solveGroupCacheFriendlySplitImpulseIterations(
         bodies, body_count, manifolds, manifold_count, constraints, constraint_count, info, drawer);
     if (!info.m_splitImpulse || largest_correction_ < kPushConverged) return;  // nothing to correct
-    // As many iterations as the velocity solve has, or fewer once converged (a structure at rest
-    // needs none: its corrections are nil).
+    // push_iterations(info), or fewer once converged (a structure at rest needs none: its
+    // corrections are nil).
     for (int iteration = 0; iteration < push_iterations(info); ++iteration) {
         btScalar largest = 0.0;  // of the impulse changes over the effective masses: rate changes
-        for (const Pushed& p : pushed_) {
+        for (const PlascapRow& p : rows_) {
+            if (!p.holds_position) continue;
             btSolverConstraint& row = m_tmpSolverNonContactConstraintPool[p.row];
             largest = std::max(largest, resolve_push(m_tmpSolverBodyPool[row.m_solverBodyIdA], m_tmpSolverBodyPool[row.m_solverBodyIdB], row) *
                                             p.rate_per_impulse);

@@ -110,10 +110,12 @@ bool PlasticJointLaw::settle(const PerDof<double>& measured, const PerDof<double
     // bending rows would dissipate 1/cos θ_y too much — energy the ledger then shows as created.
     // The rows' axes follow the engines' branch (|θy| ≤ π/2, so cos θy ≥ 0), whatever branch the
     // continuous angles are on.
-    // Swing–twist rows are the angles' exact gradients (swing_twist.hpp): their factor is 1.
-    const double twist = 0.5 * (last_measured_[index(Dof::My)] + measured[index(Dof::My)]);
-    for (Dof dof : {Dof::Mx, Dof::Mz}) {
-        if (laws_[index(dof)] && euler_rows()) laws_[index(dof)]->set_work_factor(std::cos(twist));
+    // Swing–twist rows are the angles' exact gradients (swing_twist.hpp): their factor stays 1.
+    if (euler_rows()) {
+        const double cos_twist = std::cos(0.5 * (last_measured_[index(Dof::My)] + measured[index(Dof::My)]));
+        for (Dof dof : {Dof::Mx, Dof::Mz}) {
+            if (laws_[index(dof)]) laws_[index(dof)]->set_work_factor(cos_twist);
+        }
     }
     track(measured, positions);
     for (std::size_t i = 0; i < kDofCount; ++i) {

@@ -43,17 +43,16 @@ protected:
     btScalar solveGroupCacheFriendlyFinish(btCollisionObject** bodies, int count, const btContactSolverInfo& info) override;
 
 private:
+    // A row of a BulletPlasticConstraint; its force is carried to the next step. One that holds a
+    // position (Lock, Hold) is warm-started and pushed; a Push row applies its force and needs neither.
     struct PlascapRow {
         int row;  // in m_tmpSolverNonContactConstraintPool
         BulletPlasticConstraint* constraint;
         std::size_t k;  // the constraint's k-th written row
+        bool holds_position = false;
+        double rate_per_impulse = 0.0;  // J·M⁻¹·Jᵀ
     };
     std::vector<PlascapRow> rows_;  // this solve's
-    struct Pushed {
-        int row;                  // in m_tmpSolverNonContactConstraintPool
-        double rate_per_impulse;  // J·M⁻¹·Jᵀ
-    };
-    std::vector<Pushed> pushed_;  // those that hold a position
     // The push iterations per solve: half the velocity solve's (the corrections need not converge
     // in one step; what is left is corrected in the next).
     static int push_iterations(const btContactSolverInfo& info) { return std::max(1, info.m_numIterations / 2); }
