@@ -107,8 +107,8 @@ TEST(PlasticSim, EveryExampleAgreesAcrossBulletAndOde) {
             if (joint["broken"].get<bool>()) {
                 // A broken joint's pieces collide again, and the engines' contacts differ
                 // (docs/cross-engine.md): breaks after the first, which follow those contacts, match
-                // to 0.3 s (72 steps) only — joint-2 breaks at 1.22 s on bullet, 1.39 s on
-                // bullet-spring2 and 1.46 s on ode (docs/cross-engine.md).
+                // to 0.3 s (72 steps) only — joint-2 breaks at 1.30 s on bullet, 1.38 s on
+                // bullet-spring2 and 1.47 s on ode (docs/cross-engine.md).
                 const bool first = joint["broken_at"].get<double>() == first_break;
                 const double dt = a.scene == std::string("collapsing-stack.json") ? (first ? 1.0 / 240 : 0.3) : 0.0;
                 EXPECT_LE(std::abs(joint["broken_at"].get<double>() - other["broken_at"].get<double>()), dt + 1e-9)

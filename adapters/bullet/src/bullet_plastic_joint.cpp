@@ -101,7 +101,8 @@ void BasicBulletPlasticJoint<Constraint>::updateAction(btCollisionWorld*, btScal
             constraint_->setEnabled(false);  // broken stays broken: nothing re-enables it
             leave_world();                   // and its bodies collide again
             return;
-        case JointEvent::Yielded: wake(); break;
+        case JointEvent::Yielded:
+        case JointEvent::AtCapacity: wake(); break;
         case JointEvent::None: break;
     }
     plan(dt, state);

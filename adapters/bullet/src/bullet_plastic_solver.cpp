@@ -21,14 +21,17 @@ BulletPlasticConstraint* plascap_constraint(btTypedConstraint* constraint) {
 constexpr btScalar kPushConverged = 1e-6;
 
 // One projected Gauss–Seidel step of a row's push (as Bullet's resolveSplitPenetrationImpulse does
-// for a contact), within the row's bounds; returns |the push impulse's change| (times J·M⁻¹·Jᵀ, the
-// change of the row's push rate).
+// for a contact), within what the row's bounds leave beside the force it carries (its warm start:
+// the pushes run before the velocity iterations), so that a row at its capacity cannot push on top;
+// returns |the push impulse's change| (times J·M⁻¹·Jᵀ, the change of the row's push rate).
 btScalar resolve_push(btSolverBody& a, btSolverBody& b, btSolverConstraint& row) {
     btScalar delta = row.m_rhsPenetration;
     delta -= (row.m_contactNormal1.dot(a.internalGetPushVelocity()) + row.m_relpos1CrossNormal.dot(a.internalGetTurnVelocity()) +
               row.m_contactNormal2.dot(b.internalGetPushVelocity()) + row.m_relpos2CrossNormal.dot(b.internalGetTurnVelocity())) *
              row.m_jacDiagABInv;
-    const btScalar sum = std::clamp<btScalar>(row.m_appliedPushImpulse + delta, row.m_lowerLimit, row.m_upperLimit);
+    const btScalar lower = std::min<btScalar>(0, row.m_lowerLimit - row.m_appliedImpulse);
+    const btScalar upper = std::max<btScalar>(0, row.m_upperLimit - row.m_appliedImpulse);
+    const btScalar sum = std::clamp<btScalar>(row.m_appliedPushImpulse + delta, lower, upper);
     delta = sum - row.m_appliedPushImpulse;
     row.m_appliedPushImpulse = sum;
     a.internalApplyPushImpulse(row.m_contactNormal1 * a.internalGetInvMass(), row.m_angularComponentA, delta);

@@ -34,7 +34,7 @@ void ElasticPlasticLaw::start(double position) {
 }
 
 RowCommand ElasticPlasticLaw::plan(double position, double dt, double effective_mass, std::optional<double> joint_bound) {
-    planned_position_ = position;
+    planned_position_ = position, planned_dt_ = dt, planned_mass_ = effective_mass;
     regime_ = choose_regime(law_.stiffness, effective_mass, dt);
     omega_dt_ = spring_omega_dt(law_.stiffness, effective_mass, dt);
     if (regime_ != Regime::ElasticPlastic) {
@@ -78,13 +78,27 @@ void ElasticPlasticLaw::settle(double position, double applied_force) {
 }
 
 void ElasticPlasticLaw::settle_rigid_plastic(double position, double applied_force) {
-    // Motion at capacity is plastic flow and the row's work on it, −f·Δx, is absorbed.
-    const bool at_capacity = applied_force >= kAtCapacity * last_upper_ || applied_force <= kAtCapacity * last_lower_;
-    if (!at_capacity) return;
-    const double step = position - planned_position_;
-    plastic_offset_ += step;
-    accumulated_ += std::abs(step);
-    dissipated_ += -applied_force * step * work_factor_;
+    // Motion at capacity is plastic flow (flow_criterion.hpp) and the row's work on it, −f·Δx, is
+    // absorbed. A flow confirmed late takes up the motion of the steps at the bound before it, and
+    // the row's work on that motion.
+    const double side_bound = applied_force >= 0.0 ? last_upper_ : -last_lower_;
+    const double share = side_bound > 0.0 ? applied_force / side_bound : 0.0;
+    const double motion = position - planned_position_;
+    const double stopping = std::isfinite(planned_mass_) && side_bound > 0.0
+                                ? planned_mass_ * std::abs(motion) / (planned_dt_ * planned_dt_) / side_bound
+                                : 0.0;  // m·|Δx|/dt² over the bound
+    const bool flowed = flow_.flowed(share, stopping);
+    if (!flow_.at_bound()) {
+        pending_motion_ = pending_work_ = 0.0;  // the solver's motion: the hold takes it back
+        return;
+    }
+    pending_motion_ += motion;
+    pending_work_ += -applied_force * motion * work_factor_;
+    if (!flowed) return;
+    plastic_offset_ += pending_motion_;
+    accumulated_ += std::abs(pending_motion_);
+    dissipated_ += pending_work_;
+    pending_motion_ = pending_work_ = 0.0;
 }
 
 void ElasticPlasticLaw::settle_elastic_plastic(double position) {

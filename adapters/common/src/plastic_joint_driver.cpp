@@ -5,7 +5,7 @@ namespace plascap {
 PlasticJointDriver::PlasticJointDriver(const PlasticJointSettings& settings, RowCapabilities rows)
     : law_(settings, rows) {
     for (Dof dof : kAllDofs) {
-        if (law_.mode(dof) == DofMode::Plastic && settings.laws[index(dof)].stiffness) needs_masses_ = true;
+        if (law_.mode(dof) == DofMode::Plastic && settings.laws[index(dof)].stiffness) springs_ = true;
     }
 }
 
@@ -36,7 +36,8 @@ JointEvent PlasticJointDriver::settle(const WorldLoad& on_b, const PerDof<double
             on_break_({time_, law_.plastic_displacement(), law_.plastic_rotation(), law_.dissipated()});
         return JointEvent::Broke;
     }
-    return law_.plastic_displacement() + law_.plastic_rotation() > before ? JointEvent::Yielded : JointEvent::None;
+    if (law_.plastic_displacement() + law_.plastic_rotation() > before) return JointEvent::Yielded;
+    return law_.at_capacity() ? JointEvent::AtCapacity : JointEvent::None;
 }
 
 }  // namespace plascap

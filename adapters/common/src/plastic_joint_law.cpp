@@ -141,6 +141,20 @@ double PlasticJointLaw::accumulated(bool rotations) const {
     return sum;
 }
 
+bool PlasticJointLaw::at_capacity() const {
+    for (const auto& law : laws_) {
+        if (law && law->at_capacity()) return true;
+    }
+    return false;
+}
+
+bool PlasticJointLaw::near_capacity() const {
+    for (const auto& law : laws_) {
+        if (law && law->near_capacity()) return true;
+    }
+    return false;
+}
+
 double PlasticJointLaw::plastic_displacement() const { return accumulated(false); }
 double PlasticJointLaw::plastic_rotation() const { return accumulated(true); }
 

@@ -5,12 +5,15 @@
 // the dof position and x_p the plastic offset (the spring's moving equilibrium). When the elastic
 // trial force passes a capacity, x_p moves so the force equals it (return mapping; Simo & Hughes,
 // Computational Inelasticity, 1998, §1.2). Without a stiffness (or past eq. 3.2) the dof is
-// rigid-plastic: x_p follows x in the steps where the row was at its capacity; motion the engine's
-// iterative solver let through below capacity is not plastic and is corrected back towards x_p
-// (Baumgarte, with Bullet's and ODE's usual factor kHoldCorrection). The work the dof absorbs in
-// plastic flow is the dissipated energy.
+// rigid-plastic: x_p follows x in the steps where the row flowed at its capacity (flow_criterion.hpp
+// tells flow from the slack of an unconverged solve); motion the engine's iterative solver let
+// through otherwise is not plastic and is corrected back towards x_p (Baumgarte, with Bullet's and
+// ODE's usual factor kHoldCorrection). The work the dof absorbs in plastic flow is the dissipated
+// energy.
+#include <cmath>
 #include <optional>
 
+#include "plascap/adapters/flow_criterion.hpp"
 #include "plascap/adapters/regime.hpp"
 #include "plascap/adapters/row_command.hpp"
 
@@ -19,9 +22,6 @@ namespace plascap {
 // The share of a rigid-plastic dof's position error corrected per step (Baumgarte; the default ERP
 // of Bullet and ODE is 0.2).
 inline constexpr double kHoldCorrection = 0.2;
-// A row counts as at its capacity above this share of it (the solver clamps to the bound exactly;
-// rotations read back through non-orthogonal Euler axes need the margin).
-inline constexpr double kAtCapacity = 0.99;
 
 struct DofLaw {
     double capacity_positive = 0.0;    // resists positive motion of b (N, Mx, Mz: tension side) [N | N·m]
@@ -68,6 +68,10 @@ public:
     double plastic_offset() const { return plastic_offset_; }
     double accumulated_plastic() const { return accumulated_; }  // Σ|Δx_p| [m | rad]
     double dissipated() const { return dissipated_; }            // [J]
+    // A rigid-plastic row at its bound in the last step.
+    bool at_capacity() const { return regime_ != Regime::ElasticPlastic && flow_.at_bound(); }
+    // A rigid-plastic row carried at least half its bound in the last step.
+    bool near_capacity() const { return regime_ != Regime::ElasticPlastic && std::abs(flow_.last_share()) >= 0.5; }
     // ½·k·(x − x_p)² in the elastic regime, else 0 [J].
     double elastic_energy(double position) const;
 
@@ -79,11 +83,14 @@ private:
     DofLaw law_;
     Regime regime_;
     double omega_dt_ = 0.0;
-    double planned_position_ = 0.0;
+    double planned_position_ = 0.0, planned_dt_ = 0.0, planned_mass_ = 0.0;  // the step as planned
     double plastic_offset_ = 0.0;
     double accumulated_ = 0.0;
     double dissipated_ = 0.0;
     double last_force_ = 0.0;
+    FlowCriterion flow_;  // rigid-plastic: is motion at the bound flow?
+    // The motion and the row's work in the steps at its bound not yet confirmed as flow [m | rad, J].
+    double pending_motion_ = 0.0, pending_work_ = 0.0;
     double last_lower_ = 0.0, last_upper_ = 0.0;  // the Hold row's force range last planned
     bool two_sided_bounds_ = false;
     bool coupled_ = false;

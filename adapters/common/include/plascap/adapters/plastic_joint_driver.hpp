@@ -19,6 +19,7 @@ namespace plascap {
 enum class JointEvent {
     None,     // held (or stayed elastic)
     Yielded,  // a dof flowed: plastic deformation grew
+    AtCapacity,  // a rigid-plastic row was at its capacity but did not flow (yet: flow_criterion.hpp)
     Broke,    // it passed a breaking limit; its rows are gone for good
 };
 
@@ -44,16 +45,18 @@ public:
 
     // The row commands of the next step of dt, from the joint as measured at its start and b's
     // centre of mass then (the feedback's torque is about it). `inertias()` → {b, a (nullopt: the
-    // world)} is called only when a spring needs the rows' effective masses (eq. 3.2).
+    // world)} is called only when the rows' effective masses are needed: for a spring (eq. 3.2), or
+    // for a rigid-plastic row that may reach its bound (flow_criterion.hpp); a joint far below its
+    // capacities keeps the masses it last had.
     template <class Inertias>
     PerDof<std::optional<RowCommand>> plan(const JointFrameState& state, const Vec3& centre_of_b, double dt,
                                            Inertias&& inertias) {
-        PerDof<double> masses{};
-        if (needs_masses_) {
+        if (springs_ || !masses_known_ || law_.near_capacity()) {
             const std::pair<BodyInertia, std::optional<BodyInertia>> bodies = inertias();
-            masses = row_effective_masses(state.axes, bodies.first, bodies.second);
+            masses_ = row_effective_masses(state.axes, bodies.first, bodies.second);
+            masses_known_ = true;
         }
-        return plan_with_masses(state, centre_of_b, dt, masses);
+        return plan_with_masses(state, centre_of_b, dt, masses_);
     }
 
     // After the step: what the rows applied to b (world frame, torque about b's centre of mass as it
@@ -78,7 +81,9 @@ private:
                                                        const PerDof<double>& effective_masses);
 
     PlasticJointLaw law_;
-    bool needs_masses_ = false;
+    bool springs_ = false;  // a plastic dof has a stiffness
+    bool masses_known_ = false;
+    PerDof<double> masses_{};  // the rows' effective masses as last computed
     bool engaged_ = false;
     PerDof<double> engaged_positions_{};
     JointAxesInWorld planned_axes_{};

@@ -42,6 +42,10 @@ public:
     const ElasticPlasticLaw* law(Dof dof) const;
 
     bool broken() const { return broken_at_.has_value(); }
+    // A rigid-plastic row was at its bound in the last step (flowing or not).
+    bool at_capacity() const;
+    // A rigid-plastic row carried at least half its bound in the last step.
+    bool near_capacity() const;
     std::optional<double> broken_at() const { return broken_at_; }
     double plastic_displacement() const;  // Σ over translations of Σ|Δx_p| [m]
     double plastic_rotation() const;      // Σ over rotations [rad]
