@@ -15,6 +15,7 @@ packages=(
   libbenchmark-dev                     # benchmarks
   libcli11-dev                         # command-line options
   nlohmann-json3-dev                   # JSON files
+  pybind11-dev python3-dev python3-pytest  # the Python module and its tests (Debian's /usr/bin/python3)
 )
 
 missing=()
