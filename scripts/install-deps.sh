@@ -16,6 +16,7 @@ packages=(
   libcli11-dev                         # command-line options
   nlohmann-json3-dev                   # JSON files
   pybind11-dev python3-dev python3-pytest  # the Python module and its tests (Debian's /usr/bin/python3)
+  python3-numpy python3-distributed python3-pandas  # its arrays, sweeps on dask, tables
 )
 
 missing=()

@@ -15,14 +15,30 @@ from ._plascap import (  # noqa: F401
     PlasticTorsion,
     Section,
     TorsionConstant,
+    YieldCondition,
     __version__,
+    engines,
     material,
     materials,
     shape_families,
     shapes,
 )
+from .arrays import array as _array
+from .scenes import run_scene
+from .sweep import sweep, table
+
+
+def _interaction_curve(self, cut, samples=72, N=0.0):
+    """Points of a cut through the exact yield surface, in order around it: 'N-Mx' -> (N, Mx) rows,
+    'N-Mz' -> (N, Mz), 'Mx-Mz' at the axial force N -> (Mx, Mz); N [N], moments [N*m]. An array of
+    shape (samples, 2) with NumPy, else a list of pairs. samples: 8 to 100000."""
+    return _array(self._interaction_curve(cut, samples, N))
+
+
+Section.interaction_curve = _interaction_curve
 
 __all__ = [
     "Capacities", "ElasticProperties", "InputError", "Material", "PlasticTorsion", "Section",
-    "TorsionConstant", "material", "materials", "shape_families", "shapes",
+    "TorsionConstant", "YieldCondition", "engines", "material", "materials", "run_scene",
+    "shape_families", "shapes", "sweep", "table",
 ]

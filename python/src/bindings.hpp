@@ -34,5 +34,7 @@ void bind_materials(py::module_& m);
 void bind_sections(py::module_& m);
 void bind_capacities(py::module_& m);
 void bind_properties(py::module_& m);
+void bind_yield(py::module_& m);
+void bind_scenes(py::module_& m);
 
 }  // namespace plascap::python

@@ -9,4 +9,6 @@ PYBIND11_MODULE(_plascap, m) {
     plascap::python::bind_sections(m);
     plascap::python::bind_capacities(m);
     plascap::python::bind_properties(m);
+    plascap::python::bind_yield(m);
+    plascap::python::bind_scenes(m);
 }
