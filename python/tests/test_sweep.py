@@ -21,3 +21,10 @@ def test_a_time_step_sweep_on_two_workers_equals_the_serial_loop():
     assert plascap.sweep(tension_block, steps, workers=2) == serial
     frame = plascap.table(serial)
     assert list(frame.columns) == ["dt", "plastic", "steps"] and len(frame) == 4
+
+
+def test_a_sweep_goes_to_a_running_scheduler_by_its_address():
+    from dask.distributed import LocalCluster
+    steps = [1 / 60, 1 / 240]
+    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster:
+        assert plascap.sweep(tension_block, steps, scheduler=cluster.scheduler_address) == [tension_block(dt) for dt in steps]
