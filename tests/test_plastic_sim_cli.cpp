@@ -127,7 +127,8 @@ TEST(PlasticSim, CsvTraceHasAHeaderAndOneRowPerStep) {
     std::ifstream in(csv);
     std::string header, line;
     std::getline(in, header);
-    EXPECT_EQ(header.rfind("time,block.x,block.y,block.z,block.vx,block.vy,block.vz,top.N.force,top.N.offset,", 0), 0u)
+    EXPECT_EQ(header.rfind("time,block.x,block.y,block.z,block.vx,block.vy,block.vz,block.qw,block.qx,block.qy,block.qz,"
+                           "top.N.force,top.N.offset,", 0), 0u)
         << header;
     int rows = 0;
     std::string last;

@@ -73,3 +73,17 @@ def test_a_bad_scene_raises_what_plastic_sim_prints(tmp_path):
     assert str(raised.value) == message
     with pytest.raises(ValueError, match="engine"):
         plascap.run_scene(os.path.join(SCENES, "paper-tension-block.json"), engine="havok")
+
+
+def test_the_trace_records_orientations_a_spinning_cube_turns_at_its_rate():
+    # A free cube spinning at w = 2 rad/s about z (symmetric inertia: no precession) has the
+    # orientation q(t) = (cos(w t/2), 0, 0, sin(w t/2)).
+    scene = {"dt": 1 / 240, "duration": 1.0, "gravity": [0, 0, 0],
+             "bodies": [{"name": "cube", "box": [1, 1, 1], "mass": 1, "position": [0, 5, 0], "angular_velocity": [0, 0, 2]}],
+             "joints": []}
+    for engine in plascap.engines():
+        trace = plascap.run_scene(scene, engine=engine, trace=True)["trace"]
+        t = trace["time"]
+        assert numpy.allclose(trace["cube.qw"], numpy.cos(t), atol=1e-4), engine
+        assert numpy.allclose(trace["cube.qz"], numpy.sin(t), atol=1e-4), engine
+        assert numpy.allclose(trace["cube.qx"], 0, atol=1e-12) and numpy.allclose(trace["cube.qy"], 0, atol=1e-12), engine

@@ -9,7 +9,7 @@ namespace plascap {
 void write_trace_header(std::ostream& out, const Scene& scene) {
     out << "time";
     for (const SceneBody& b : scene.bodies) {
-        for (const char* c : {"x", "y", "z", "vx", "vy", "vz"}) out << ',' << b.name << '.' << c;
+        for (const char* c : {"x", "y", "z", "vx", "vy", "vz", "qw", "qx", "qy", "qz"}) out << ',' << b.name << '.' << c;
     }
     for (const SceneJoint& j : scene.joints) {
         for (Dof dof : kAllDofs) {
@@ -32,6 +32,7 @@ void write_trace_row(std::ostream& out, const Scene& scene, const SceneEngine& e
         const BodyState s = engine.body(i);
         for (double v : s.position) out << ',' << v;
         for (double v : s.velocity) out << ',' << v;
+        for (double v : s.orientation) out << ',' << v;  // unit quaternion w, x, y, z (for replays)
     }
     for (std::size_t j = 0; j < scene.joints.size(); ++j) {
         const PlasticJointLaw* law = engine.joint_law(j);

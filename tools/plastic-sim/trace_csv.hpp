@@ -1,5 +1,6 @@
 #pragma once
-// The per-step CSV trace: time; each body's position and velocity; each joint's force and plastic
+// The per-step CSV trace: time; each body's position, velocity and orientation (a unit quaternion
+// w, x, y, z); each joint's force and plastic
 // offset per plastic dof, accumulated plastic displacement and rotation, dissipated energy, broken;
 // each node's displacement; the energy ledger (energy_ledger.hpp).
 #include <iosfwd>
