@@ -1,5 +1,6 @@
 #include "plascap/adapters/plastic_joint_law.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "coupled_yield.hpp"
@@ -141,18 +142,8 @@ double PlasticJointLaw::accumulated(bool rotations) const {
     return sum;
 }
 
-bool PlasticJointLaw::at_capacity() const {
-    for (const auto& law : laws_) {
-        if (law && law->at_capacity()) return true;
-    }
-    return false;
-}
-
-bool PlasticJointLaw::near_capacity() const {
-    for (const auto& law : laws_) {
-        if (law && law->near_capacity()) return true;
-    }
-    return false;
+bool PlasticJointLaw::any_law(bool (ElasticPlasticLaw::*test)() const) const {
+    return std::any_of(laws_.begin(), laws_.end(), [test](const auto& law) { return law && ((*law).*test)(); });
 }
 
 double PlasticJointLaw::plastic_displacement() const { return accumulated(false); }

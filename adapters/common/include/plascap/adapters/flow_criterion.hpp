@@ -22,6 +22,8 @@
 // through the joint's other rows or contacts, so an impact through a lever or a contact must move
 // the dof further before it counts; and at few iterations (ODE's QuickStep below about 30) the
 // noise can keep a real, marginal overload's mean below kConfirmedShare.
+#include <cmath>
+
 namespace plascap {
 
 // A row counts as at its bound above this share of it (the solvers clamp to the bound exactly;
@@ -42,15 +44,13 @@ public:
     // through. True when the row flowed in the step.
     bool flowed(double share, double stopping_share);
 
-    bool at_bound() const { return at_bound_; }  // in the last step
-    double last_share() const { return last_share_; }
-    double mean_share() const { return mean_share_; }
+    double last_share() const { return last_share_; }                      // of the last step
+    bool at_bound() const { return std::abs(last_share_) >= kAtCapacity; }  // in the last step
 
 private:
     double mean_share_ = 0.0;
     double flowing_ = 0.0;  // the share of the last step if it flowed, else 0
     double last_share_ = 0.0;
-    bool at_bound_ = false;
 };
 
 }  // namespace plascap

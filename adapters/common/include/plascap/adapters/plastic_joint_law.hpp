@@ -43,9 +43,9 @@ public:
 
     bool broken() const { return broken_at_.has_value(); }
     // A rigid-plastic row was at its bound in the last step (flowing or not).
-    bool at_capacity() const;
+    bool at_capacity() const { return any_law(&ElasticPlasticLaw::at_capacity); }
     // A rigid-plastic row carried at least half its bound in the last step.
-    bool near_capacity() const;
+    bool near_capacity() const { return any_law(&ElasticPlasticLaw::near_capacity); }
     std::optional<double> broken_at() const { return broken_at_; }
     double plastic_displacement() const;  // Σ over translations of Σ|Δx_p| [m]
     double plastic_rotation() const;      // Σ over rotations [rad]
@@ -55,6 +55,7 @@ public:
 
 private:
     double accumulated(bool rotations) const;
+    bool any_law(bool (ElasticPlasticLaw::*test)() const) const;  // of the plastic dofs' laws
 
     PerDof<ElasticPlasticLaw*> plastic_laws();
     // The measured positions with the rotations unwrapped against the last ones seen (angles wrap at ±π).
