@@ -30,13 +30,7 @@ def _trace(text):
     if not rows:
         return {}
     header, values = rows[0], rows[1:]
-    trace = {}
-    for i, name in enumerate(header):
-        try:
-            trace[name] = column(float(r[i]) for r in values)
-        except ValueError:  # a text column (none today): kept as text
-            trace[name] = [r[i] for r in values]
-    return trace
+    return {name: column(float(r[i]) for r in values) for i, name in enumerate(header)}  # all numeric
 
 
 def run_scene(scene, engine="bullet", trace=False):

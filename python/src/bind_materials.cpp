@@ -1,7 +1,6 @@
 // Materials: plascap.Material and the built-in catalogue of sourced grades (docs/materials.md).
 #include <pybind11/stl.h>
 
-#include <cmath>
 #include <sstream>
 
 #include "bindings.hpp"
@@ -14,9 +13,9 @@ namespace plascap::python {
 Material resolve_material(const std::optional<MaterialArgument>& material, std::optional<double> fy, const std::string& what) {
     if (material && fy) throw InputError(what + ": give fy or material, not both");
     if (fy) {
-        if (!std::isfinite(*fy) || *fy < kMinYieldStress || *fy > kMaxYieldStress)
-            throw InputError(what + ": fy must be a yield stress in Pa between 1 and 1e12 (got " + std::to_string(*fy) + ")");
-        return Material{"", *fy};
+        const Material given{"", *fy};
+        validate_material(given, what);
+        return given;
     }
     if (!material) throw InputError(what + ": needs material (a catalogue name, e.g. \"S355\", or a Material) or fy [Pa]");
     if (const auto* name = std::get_if<std::string>(&*material)) return MaterialCatalogue::built_in().get(*name, what);
@@ -39,11 +38,7 @@ Material make_material(double fy, const std::string& name, std::optional<double>
     Material m{name, fy};
     m.fc = fc, m.E = E, m.nu = nu, m.density = density;
     if (shear) m.shear = parse_shear_criterion(*shear);
-    if (!std::isfinite(fy) || fy < 0.0 || fy > kMaxYieldStress) throw InputError("Material: fy must be in [0, 1e12] Pa (got " + std::to_string(fy) + ")");
-    if (fc && !(std::isfinite(*fc) && *fc >= 0.0)) throw InputError("Material: fc must be a non-negative stress in Pa");
-    if (E && !(std::isfinite(*E) && *E > 0.0)) throw InputError("Material: E must be a positive modulus in Pa");
-    if (nu && !(std::isfinite(*nu) && *nu > -1.0 && *nu < 0.5)) throw InputError("Material: nu must lie in (-1, 0.5)");
-    if (density && !(std::isfinite(*density) && *density > 0.0)) throw InputError("Material: density must be positive, in kg/m^3");
+    validate_material(m, "Material");  // the ranges a section file's material must keep
     return m;
 }
 

@@ -2,8 +2,6 @@
 // (Nadai's sand heap) of a section (docs/elastic-and-torsion.md).
 #include <pybind11/stl.h>
 
-#include <sstream>
-
 #include "bindings.hpp"
 #include "plascap/sections/elastic_properties.hpp"
 #include "plascap/sections/plastic_torsion.hpp"
@@ -43,9 +41,7 @@ void bind_properties(py::module_& m) {
         .def_property_readonly("EIzz", [](const ElasticProperties& e) { return e.stiffness ? std::optional(e.stiffness->EIzz) : std::nullopt; },
                                "bending stiffness about z [N*m^2]")
         .def("__repr__", [](const ElasticProperties& e) {
-            std::ostringstream out;
-            out << "ElasticProperties(area=" << e.area << ", Ixx=" << e.Ixx << ", Izz=" << e.Izz << ", Wx=" << e.Wx << ", Wz=" << e.Wz << ")";
-            return out.str();
+            return repr("ElasticProperties", {{"area", e.area}, {"Ixx", e.Ixx}, {"Izz", e.Izz}, {"Wx", e.Wx}, {"Wz", e.Wz}});
         });
 
     py::class_<TorsionConstant>(m, "TorsionConstant", "Saint-Venant torsion constant by finite elements, with its error.")
@@ -54,22 +50,14 @@ void bind_properties(py::module_& m) {
         .def_readonly("error", &TorsionConstant::error, "estimated absolute error of J [m^4]")
         .def_readonly("triangles", &TorsionConstant::triangles)
         .def_readonly("converged", &TorsionConstant::converged)
-        .def("__repr__", [](const TorsionConstant& t) {
-            std::ostringstream out;
-            out << "TorsionConstant(J=" << t.J << ", error=" << t.error << ")";
-            return out.str();
-        });
+        .def("__repr__", [](const TorsionConstant& t) { return repr("TorsionConstant", {{"J", t.J}, {"error", t.error}}); });
 
     py::class_<PlasticTorsion>(m, "PlasticTorsion", "Fully plastic torque (Nadai's sand heap), with its error.")
         .def_readonly("T", &PlasticTorsion::T, "[N*m]")
         .def_readonly("error", &PlasticTorsion::error, "estimated absolute error [N*m]")
         .def_readonly("triangles", &PlasticTorsion::triangles)
         .def_readonly("converged", &PlasticTorsion::converged)
-        .def("__repr__", [](const PlasticTorsion& t) {
-            std::ostringstream out;
-            out << "PlasticTorsion(T=" << t.T << ", error=" << t.error << ")";
-            return out.str();
-        });
+        .def("__repr__", [](const PlasticTorsion& t) { return repr("PlasticTorsion", {{"T", t.T}, {"error", t.error}}); });
 
     py::class_<PySection> section = py::reinterpret_borrow<py::class_<PySection>>(m.attr("Section"));
     section

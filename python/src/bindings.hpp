@@ -2,6 +2,7 @@
 // The plascap Python module's parts, one per concept (docs/python.md).
 #include <pybind11/pybind11.h>
 
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <variant>
@@ -25,6 +26,9 @@ struct PySection {
 
 // A material argument: a catalogue name or a Material.
 using MaterialArgument = std::variant<std::string, Material>;
+
+// "Type(name=value, ...)" with the values as a stream prints them (6 significant digits), for __repr__.
+std::string repr(const std::string& type, std::initializer_list<std::pair<const char*, double>> fields);
 
 // The material of `material` or `fy` (exactly one of them); `what` names the call in messages.
 Material resolve_material(const std::optional<MaterialArgument>& material, std::optional<double> fy, const std::string& what);
