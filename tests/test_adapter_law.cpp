@@ -434,6 +434,39 @@ TEST(CoupledYield, RigidPlasticRowBoundsFollowTheSurfaceAlongTheLastLoad) {
     EXPECT_NEAR(law.dissipated(), 10 * 0.01, 1e-15);
 }
 
+// The report's utilisation: on the circle C = 10 the section load (6, 8) has U = |(6, 8)|/10 = 1
+// (the exact U: the share 1.4 is past 1/2);
+// without a condition, each plastic dof's load over its own side's capacity, the largest counting:
+// N's load 6 of N⁺ = 10 (0.6), Mz's −3 of Mz⁻ = 4 (0.75); rigid dofs' loads do not count.
+TEST(PlasticJointLaw, UtilisationIsTheSurfacesUOrTheLargestShareOfASidesCapacity) {
+    PlasticJointLaw coupled(circle_joint(10.0, std::nullopt));
+    const PerDof<double> zero{};
+    coupled.start(zero);
+    EXPECT_EQ(coupled.utilisation(), 0.0);
+    coupled.settle(zero, moments(-6, -8), 0.01);
+    EXPECT_NEAR(coupled.utilisation(), 1.0, 1e-14);
+    coupled.settle(zero, moments(3, 0), 0.02);
+    EXPECT_NEAR(coupled.utilisation(), 0.3, 1e-14);
+    // Far inside (Σ|s|/C = 0.4 ≤ 1/2) the cheap upper bound, not U = √8/10 = 0.283.
+    coupled.settle(zero, moments(2, 2), 0.03);
+    EXPECT_NEAR(coupled.utilisation(), 0.4, 1e-14);
+
+    PlasticJointSettings s;
+    s.modes.fill(DofMode::Rigid);
+    s.modes[index(Dof::N)] = s.modes[index(Dof::Mz)] = DofMode::Plastic;
+    s.laws[index(Dof::N)] = DofLaw{10.0, 5.0, std::nullopt};
+    s.laws[index(Dof::Mz)] = DofLaw{2.0, 4.0, std::nullopt};
+    PlasticJointLaw box(s);
+    box.start(zero);
+    PerDof<double> f{};
+    f[index(Dof::N)] = -6.0, f[index(Dof::Mz)] = 3.0, f[index(Dof::Qx)] = 1e6;
+    box.settle(zero, f, 0.01);
+    EXPECT_NEAR(box.utilisation(), 0.75, 1e-15);
+    f[index(Dof::N)] = 4.5;  // load −4.5 on N⁻ = 5
+    box.settle(zero, f, 0.02);
+    EXPECT_NEAR(box.utilisation(), 0.9, 1e-15);
+}
+
 // Elastic-plastic, k = 1000 N·m/rad per dof, C = 10: a trial (12, 5) outside the circle returns to
 // it along the normal, (12, 5)·10/13, with Δθ_p = (13 − 10)/k along (12, 5)/13 (radial return is
 // exact for a circle with equal stiffnesses); the energy dissipated is the load times Δθ_p.

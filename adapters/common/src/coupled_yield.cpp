@@ -10,21 +10,12 @@ bool rigid_plastic(const ElasticPlasticLaw& law) { return law.regime() != Regime
 
 }  // namespace
 
-namespace {
-
-// Σ |s_j|/C_j over the dofs that carry load: the gauge of the cross-polytope spanned by the axis
-// capacities, which lies inside the convex surface, so U ≤ this share.
 double cross_polytope_share(const AxisCapacities& axes, const PerDof<double>& loads) {
     double share = 0.0;
     for (std::size_t j = 0; j < kDofCount; ++j)
         if (loads[j] != 0.0) share += std::abs(loads[j]) / axes.at(j, loads[j]);
     return share;
 }
-
-// Below this share the load is certainly well inside (U ≤ share), and the bounds need no exact U.
-constexpr double kFarInside = 0.5;
-
-}  // namespace
 
 PerDof<std::optional<double>> coupled_hold_bounds(const YieldCondition& condition, const AxisCapacities& axes,
                                                   YieldHint& hint, const PerDof<double>& loads,

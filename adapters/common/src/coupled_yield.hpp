@@ -27,6 +27,12 @@ struct AxisCapacities {
     double at(std::size_t dof, double load) const { return load >= 0.0 ? positive[dof] : negative[dof]; }
 };
 
+// Σ |s_j|/C_j over the dofs that carry load: the gauge of the inscribed cross-polytope, so U ≤ it.
+double cross_polytope_share(const AxisCapacities& axes, const PerDof<double>& loads);
+
+// Below this share the load is certainly well inside (U ≤ share), and the bounds need no exact U.
+inline constexpr double kFarInside = 0.5;
+
 // The Hold bounds of the rigid-plastic dofs for the next step; nothing for the others. `laws`
 // holds each plastic dof's law (nullptr for free and rigid dofs), loads the last step's six loads.
 PerDof<std::optional<double>> coupled_hold_bounds(const YieldCondition& condition, const AxisCapacities& axes,

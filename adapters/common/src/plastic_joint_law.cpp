@@ -157,6 +157,25 @@ double PlasticJointLaw::dissipated() const {
     return sum;
 }
 
+double PlasticJointLaw::utilisation() const {
+    if (settings_.yield_condition) {
+        // Well inside, the inscribed cross-polytope's share bounds U from above and costs no solve
+        // (a report of a thousand joints would otherwise solve for each one's U).
+        const double share = detail::cross_polytope_share({axis_positive_, axis_negative_}, last_loads_);
+        if (share <= detail::kFarInside) return share;
+        YieldHint hint = hint_;  // a copy: a report must not move the law's own starting point
+        return settings_.yield_condition->evaluate(last_loads_, hint).utilisation;
+    }
+    double u = 0.0;
+    for (std::size_t i = 0; i < kDofCount; ++i) {
+        if (!laws_[i]) continue;
+        const DofLaw& law = laws_[i]->law();
+        const double load = last_loads_[i];
+        u = std::max(u, std::abs(load) / (load >= 0.0 ? law.capacity_positive : law.capacity_negative));
+    }
+    return u;
+}
+
 double PlasticJointLaw::elastic_energy(const PerDof<double>& measured) const {
     const PerDof<double> positions = continuous(measured);
     double sum = 0.0;

@@ -51,6 +51,11 @@ public:
     double plastic_rotation() const;      // Σ over rotations [rad]
     double dissipated() const;            // [J]
     double elastic_energy(const PerDof<double>& positions) const;  // [J]
+    // How close the last step's loads came to what the joint carries: U of the coupled condition, or
+    // without one the largest |load|/capacity of its side over the plastic dofs (the paper's
+    // independent limits, eq. 2.10–2.14); 1 at yield, 0 before the first step. For reports. With a
+    // condition and Σ|s_j|/C_j ≤ 1/2 (far inside), that sum, an upper bound of U, without a solve.
+    double utilisation() const;
     const PlasticJointSettings& settings() const { return settings_; }
 
 private:
