@@ -13,6 +13,7 @@
 #include "capacity_report.hpp"
 #include "interaction_report.hpp"
 #include "material_listing.hpp"
+#include "section_page.hpp"
 #include "section_svg.hpp"
 #include "shape_listing.hpp"
 #include "plascap/input_error.hpp"
@@ -50,6 +51,7 @@ struct Options {
     std::optional<int> order;
     std::optional<double> max_area;
     std::string svg;
+    std::string html;
     std::string material;
     std::vector<std::string> material_files;
     bool list_materials = false;
@@ -102,6 +104,8 @@ void add_options(CLI::App& app, Options& o) {
     app.add_option("--max-area", o.max_area, "cubature: largest triangle area [m²] (default: no bound, the "
                                              "constrained triangulation as it is)");
     app.add_option("--svg", o.svg, "Also draw the section, its mesh, neutral axes, centroid and joint point to this SVG file");
+    app.add_option("--html", o.html, "Also write a self-contained page: the drawing, the capacity table and (exact route) the "
+                                     "N-Mx, N-Mz and Mx-Mz interaction diagrams of the exact surface (docs/replay.md)");
     app.add_flag("--elastic", o.elastic, "Add the elastic properties: Ixx, Izz, Ixz, principal axes, moduli, radii of gyration, "
                                          "and EA, EI (modulus weighted) when every material gives E");
     app.add_option("--length", o.length, "With --elastic: the joint stiffness of a segment of this length [m]: EA/L, EI/L, "
@@ -112,7 +116,7 @@ void add_options(CLI::App& app, Options& o) {
                                      "(docs/yield-surface.md)");
     app.add_flag("--interaction", o.interaction, "Sample the N-Mx, N-Mz and Mx-Mz (at the load's N, else 0) curves of the "
                                                  "exact surface: into the JSON, and as diagrams into the --svg file");
-    app.add_option("--samples", o.samples, "With --interaction: points per curve, 8 to 100000")->capture_default_str();
+    app.add_option("--samples", o.samples, "With --interaction or --html: points per curve, 8 to 100000")->capture_default_str();
     app.add_option("--torsion", o.torsion, "With --load: the torsion capacity for My: fully-plastic (T_p, the sand heap) or "
                                            "paper (eq. 2.14)")
         ->capture_default_str();
@@ -231,7 +235,7 @@ private:
 int run_table(const Options& o, const plascap::MaterialCatalogue& catalogue, const plascap::ShapeCatalogue& shapes) {
     if (!o.file.empty() || !o.rect.empty() || !o.shape.empty())
         throw plascap::InputError("--table computes catalogue shapes: give no FILE, --rect or --shape with it");
-    if (o.method != "exact" || !o.only.empty() || o.elastic || !o.svg.empty() || o.shear || !o.reference.empty())
+    if (o.method != "exact" || !o.only.empty() || o.elastic || !o.svg.empty() || !o.html.empty() || o.shear || !o.reference.empty())
         throw plascap::InputError("--table goes with --material or --fy, --arc-tolerance, --csv or --json and --skip-torsion only");
     if (o.csv && o.json) throw plascap::InputError("give --csv or --json, not both");
     if (o.fy && !o.material.empty()) throw plascap::InputError("give --fy or --material, not both");
@@ -266,7 +270,7 @@ YieldReport yield_report(const Options& o, const plascap::ValidSection& valid) {
     YieldReport r;
     const plascap::TorsionCapacity torsion = plascap::torsion_capacity_from_name(o.torsion, "--torsion");
     if (o.load.empty() && o.torsion != "fully-plastic") throw plascap::InputError("--torsion goes with --load");
-    if (!o.interaction && o.samples != 72) throw plascap::InputError("--samples goes with --interaction");
+    if (!o.interaction && o.html.empty() && o.samples != 72) throw plascap::InputError("--samples goes with --interaction or --html");
     if (o.load.empty() && !o.interaction) return r;
     if (o.method != "exact") throw plascap::InputError("--load and --interaction use the exact surface: leave out --method cubature");
     if (!o.load.empty()) {
@@ -281,6 +285,29 @@ YieldReport yield_report(const Options& o, const plascap::ValidSection& valid) {
         r.curves = plascap::tools::sample_interaction(surface, r.load ? r.load->N : 0.0, o.samples);
     }
     return r;
+}
+
+// The --json object: the capacities and what was asked besides (the load's check, the curves).
+nlohmann::ordered_json report_json(const plascap::Capacities& capacities, const plascap::tools::ReportContext& context,
+                                   const YieldReport& yield, const plascap::tools::InteractionCurves* curves) {
+    nlohmann::ordered_json out = plascap::tools::capacity_json_value(capacities, context);
+    if (yield.check) plascap::tools::add_load_check_json(out, *yield.check, *yield.condition);
+    if (curves) plascap::tools::add_interaction_json(out, *curves);
+    return out;
+}
+
+// --html: the page shows the interaction diagrams whenever the exact surface is at hand.
+void write_html(const Options& o, const plascap::ValidSection& valid, const plascap::Capacities& capacities,
+                const plascap::tools::ReportContext& context, const YieldReport& yield, double max_area) {
+    std::optional<plascap::tools::InteractionCurves> curves = yield.curves;
+    std::string note;
+    if (!curves && o.method == "exact") {
+        curves = plascap::tools::sample_interaction(plascap::YieldSurface(valid), yield.load ? yield.load->N : 0.0, o.samples);
+    } else if (!curves) {
+        note = "The interaction diagrams come from the exact surface: run without --method cubature to see them.";
+    }
+    plascap::tools::write_section_page(o.html, context.source, report_json(capacities, context, yield, curves ? &*curves : nullptr),
+                                       plascap::tools::section_svg(valid, capacities, max_area, context.source), note);
 }
 
 int run(const Options& o) {
@@ -346,11 +373,9 @@ int run(const Options& o) {
     if (yield.curves) panels = plascap::tools::interaction_panels(*yield.curves, yield.load);
     if (!o.svg.empty())
         plascap::tools::write_section_svg(o.svg, valid, capacities, cubature.max_area, source, panels ? &*panels : nullptr);
+    if (!o.html.empty()) write_html(o, valid, capacities, context, yield, cubature.max_area);
     if (o.json) {
-        nlohmann::ordered_json out = plascap::tools::capacity_json_value(capacities, context);
-        if (yield.check) plascap::tools::add_load_check_json(out, *yield.check, *yield.condition);
-        if (yield.curves) plascap::tools::add_interaction_json(out, *yield.curves);
-        std::cout << out.dump(2) << "\n";
+        std::cout << report_json(capacities, context, yield, yield.curves ? &*yield.curves : nullptr).dump(2) << "\n";
         return 0;
     }
     std::cout << plascap::tools::capacity_table(capacities, context);

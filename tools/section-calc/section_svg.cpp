@@ -247,8 +247,8 @@ void draw_scale_and_title(std::ostream& svg, const Canvas& canvas, const std::st
 
 }  // namespace
 
-void write_section_svg(const std::string& path, const ValidSection& section, const Capacities& capacities,
-                       double max_area, const std::string& title, const SvgPanel* below) {
+std::string section_svg(const ValidSection& section, const Capacities& capacities, double max_area, const std::string& title,
+                        const SvgPanel* below) {
     const Canvas canvas(section);
     std::ostringstream svg;
     const double width = below ? std::max(canvas.width(), below->width) : canvas.width();
@@ -266,8 +266,14 @@ void write_section_svg(const std::string& path, const ValidSection& section, con
     draw_scale_and_title(svg, canvas, title, triangles);
     if (below) svg << "<g transform=\"translate(0," << canvas.height() << ")\">\n" << below->body << "</g>\n";
     svg << "</svg>\n";
+    return svg.str();
+}
+
+void write_section_svg(const std::string& path, const ValidSection& section, const Capacities& capacities,
+                       double max_area, const std::string& title, const SvgPanel* below) {
+    const std::string svg = section_svg(section, capacities, max_area, title, below);
     std::ofstream file(path);
-    if (file) file << svg.str();
+    if (file) file << svg;
     if (!file) throw InputError("--svg " + path + ": cannot write the file (" + std::strerror(errno) + ")");
 }
 

@@ -15,6 +15,10 @@ struct SvgPanel {
     double width = 0.0, height = 0.0;
 };
 
+// The drawing as SVG text.
+std::string section_svg(const ValidSection& section, const Capacities& capacities, double max_area, const std::string& title,
+                        const SvgPanel* below = nullptr);
+
 // Throws InputError when the file cannot be written. `below`, if given, is drawn under the section.
 void write_section_svg(const std::string& path, const ValidSection& section, const Capacities& capacities,
                        double max_area, const std::string& title, const SvgPanel* below = nullptr);
