@@ -34,4 +34,11 @@ Vec3 world_point(const BodyState& s, const Vec3& local) {
     return p;
 }
 
+Vec3 body_point(const BodyState& s, const Vec3& world) {
+    const Mat r = from_quaternion(s.orientation);  // local = Rᵀ(world − centre)
+    const Vec3 d = difference(world, s.position);
+    return {r[0][0] * d[0] + r[1][0] * d[1] + r[2][0] * d[2], r[0][1] * d[0] + r[1][1] * d[1] + r[2][1] * d[2],
+            r[0][2] * d[0] + r[1][2] * d[1] + r[2][2] * d[2]};
+}
+
 }  // namespace plascap

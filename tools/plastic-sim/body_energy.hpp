@@ -11,5 +11,7 @@ double kinetic_energy(const SceneBody& body, const BodyState& state);
 
 // The world position of `local` (body frame, from the centre) [m].
 Vec3 world_point(const BodyState& state, const Vec3& local);
+// The inverse: a world point in the body's frame, from its centre.
+Vec3 body_point(const BodyState& state, const Vec3& world);
 
 }  // namespace plascap

@@ -2,13 +2,16 @@
 // the joints yielded, what they absorbed and when they broke. See docs/plastic-sim.md.
 #include <CLI/CLI.hpp>
 
+#include <filesystem>
 #include <fstream>
+#include <optional>
 #include <iostream>
 
 #include "plascap/input_error.hpp"
 #include "tool_main.hpp"
 #include "scene.hpp"
 #include "scene_engine.hpp"
+#include "replay_page.hpp"
 #include "simulation.hpp"
 
 namespace {
@@ -18,6 +21,8 @@ struct Options {
     std::string engine = "bullet";
     bool json = false;
     std::string csv;
+    std::string html;
+    std::size_t html_frames = plascap::ReplayBudget{}.max_frames;
     bool quiet = false;
     bool list_engines = false;
 };
@@ -30,6 +35,11 @@ void add_options(CLI::App& app, Options& o) {
     app.add_flag("--json", o.json, "Print the end state as one JSON object instead of the table");
     app.add_option("--csv", o.csv, "Write a per-step trace to this CSV file (time, bodies, joint forces, plastic "
                                    "offsets, accumulated plastic deformation, dissipated energy, broken)");
+    app.add_option("--html", o.html, "Write a self-contained page that replays the run in 3-D, with the joints' states and "
+                                     "the energy ledger over time (opens from disk; docs/replay.md)");
+    app.add_option("--html-frames", o.html_frames, "With --html: the most frames the page holds, the start included, 2 to "
+                                                   "100000; fewer when the scene is large (6 MB of frame data at most)")
+        ->capture_default_str();
     app.add_flag("--quiet", o.quiet, "No progress lines on standard error");
     app.add_flag("--list-engines", o.list_engines, "List the engines this build has and exit");
     app.set_version_flag("--version", "plastic-sim " PLASCAP_VERSION);
@@ -62,7 +72,22 @@ int run(const Options& o) {
         options.trace_csv = &csv;
     }
     if (!o.quiet) options.progress = &std::cerr;
+    if (o.html.empty() && o.html_frames != plascap::ReplayBudget{}.max_frames) throw plascap::InputError("--html-frames goes with --html");
+    if (o.html_frames < 2 || o.html_frames > 100000)
+        throw plascap::InputError("--html-frames " + std::to_string(o.html_frames) + ": expected 2 to 100000");
+    plascap::ReplayBudget budget;
+    budget.max_frames = o.html_frames;
+    std::optional<plascap::ReplayRecorder> replay;
+    if (!o.html.empty()) {
+        std::ofstream probe(o.html);  // refuse an unwritable path before the run, not after it
+        if (!probe) throw plascap::InputError("--html " + o.html + ": cannot be written");
+        options.replay = &replay.emplace(scene, budget);
+    }
     const plascap::SimulationResult result = plascap::run_simulation(scene, *engine, options);
+    if (replay) {
+        const std::string title = o.scene_file == "-" ? "standard input" : std::filesystem::path(o.scene_file).filename().string();
+        plascap::write_replay_page(o.html, scene, result, *replay, {title, engine->description(), budget});
+    }
     if (o.json) {
         plascap::write_json_summary(std::cout, scene, result, engine->description());
     } else {

@@ -16,6 +16,16 @@ namespace plascap {
 
 using Quaternion = std::array<double, 4>;  // w, x, y, z; unit length
 
+// A structure member's cross section as a replay draws it (the segment extruded along its y):
+// each part's outer ring and holes in the segment's x–z plane, from the member's line [m].
+using Outline = std::vector<std::array<double, 2>>;  // (x, z)
+struct OutlinePart {
+    Outline outer;
+    std::vector<Outline> holes;
+    bool operator==(const OutlinePart& o) const { return outer == o.outer && holes == o.holes; }
+};
+using SectionOutline = std::vector<OutlinePart>;
+
 struct SceneBody {
     std::string name;
     Vec3 size{};          // full box edges along the body's x, y, z [m]
@@ -29,6 +39,7 @@ struct SceneBody {
     // the box's, m(b² + c²)/12, … (a structure's segment has its section's, not a box's).
     std::optional<Vec3> inertia;
     bool structure = false;  // a structure's segment: collides with other bodies, not with other segments
+    std::optional<std::size_t> outline;  // a structure's segment: its section, in Scene::outlines
 };
 
 // A point of a body that a structure names (a node), or where a load acts.
@@ -76,6 +87,7 @@ struct Scene {
     std::vector<SceneJoint> joints;
     std::vector<SceneNode> nodes;  // from a structure ("nodes", "members"; docs/structures.md)
     std::vector<SceneLoad> loads;
+    std::vector<SectionOutline> outlines;  // the structure's sections, for drawing
 
     std::size_t steps() const;  // duration/dt, rounded to the nearest whole step (at least 1)
 };

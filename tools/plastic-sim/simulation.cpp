@@ -4,6 +4,7 @@
 #include <ostream>
 
 #include "body_energy.hpp"
+#include "replay_recorder.hpp"
 #include "trace_csv.hpp"
 
 namespace plascap {
@@ -39,11 +40,13 @@ SimulationResult run_simulation(const Scene& scene, SceneEngine& engine, const S
     result.steps = scene.steps();
     if (options.trace_csv) write_trace_header(*options.trace_csv, scene);
     EnergyAccount energy(scene, engine);
+    if (options.replay) options.replay->record_start(engine, energy.ledger());
     for (std::size_t i = 0; i < result.steps; ++i) {
         const std::vector<AppliedLoad> loads = apply_scene_loads(scene, engine);
         engine.step();
         energy.after_step(engine, loads);
         if (options.trace_csv) write_trace_row(*options.trace_csv, scene, engine, energy.ledger());
+        if (options.replay) options.replay->after_step(i + 1, engine, energy.ledger());
         if (options.after_each_step) options.after_each_step(engine);
         if (options.progress && seconds_since(start) >= next_report) {
             next_report += 2.0;

@@ -3,6 +3,7 @@
 // per-step trace, reports progress on long runs, and returns the end state.
 #include <functional>
 #include <iosfwd>
+#include <nlohmann/json.hpp>
 #include <vector>
 
 #include "energy_ledger.hpp"
@@ -31,9 +32,12 @@ struct SimulationResult {
     std::vector<std::string> warnings;  // from the engine
 };
 
+class ReplayRecorder;  // replay_recorder.hpp
+
 struct SimulationOptions {
     std::ostream* trace_csv = nullptr;  // one row per step when set
     std::ostream* progress = nullptr;   // a line every ~2 s of wall time when set
+    ReplayRecorder* replay = nullptr;   // samples the frames of plastic-sim --html when set
     // Called after every step, for a caller that watches the run (tests averaging a deflection).
     std::function<void(SceneEngine&)> after_each_step;
 };
@@ -43,6 +47,7 @@ SimulationResult run_simulation(const Scene& scene, SceneEngine& engine, const S
 // The end state as the JSON summary: {"time", "bodies": {NAME: {"position", "velocity"}},
 // "joints": {NAME: {"broken", "broken_at", "plastic_displacement", "plastic_rotation",
 // "dissipated", ...}}, "nodes": {NAME: {"position", "displacement"}}, "energy": {...}}.
+nlohmann::json json_summary(const Scene& scene, const SimulationResult& result, const std::string& engine);
 void write_json_summary(std::ostream& out, const Scene& scene, const SimulationResult& result, const std::string& engine);
 void write_text_summary(std::ostream& out, const Scene& scene, const SimulationResult& result, const std::string& engine);
 

@@ -1,6 +1,10 @@
 #include "structure_json.hpp"
 
 #include <algorithm>
+#include <boost/geometry/algorithms/simplify.hpp>
+#include <boost/geometry/geometries/point_xy.hpp>
+#include <boost/geometry/geometries/ring.hpp>
+#include <boost/geometry/strategies/strategies.hpp>
 #include <cmath>
 #include <map>
 #include <set>
@@ -120,6 +124,41 @@ std::pair<double, double> section_extent(const ValidSection& section) {
     return {x1 - x0, z1 - z0};
 }
 
+// The section as drawn on the member's line, which passes through its joint point (the reference
+// point, else the centroid), its rings simplified (Douglas–Peucker, Boost.Geometry) to 1 % of the
+// section's size: a rolled shape's root arcs come as hundreds of chords, which a replay of a
+// thousand segments cannot draw. The same section drawn twice is kept once.
+std::size_t section_outline(const ValidSection& section, const ElasticProperties& elastic, Scene& scene) {
+    namespace bg = boost::geometry;
+    using Xz = bg::model::d2::point_xy<double>;
+    using DrawnRing = bg::model::ring<Xz, false, false>;  // counter-clockwise, open, as ValidSection keeps them
+    const Point line = section.reference() ? *section.reference() : elastic.centroid;
+    const auto [width, depth] = section_extent(section);
+    const double tolerance = 0.01 * std::max(width, depth);
+    const auto drawn = [&](const Ring& ring) {
+        DrawnRing full, simple;
+        for (const Point& local : ring) {
+            const Point p = section.to_section(local);
+            full.push_back(Xz(p.x - line.x, p.z - line.z));
+        }
+        bg::simplify(full, simple, tolerance);
+        if (simple.size() < 3) simple = full;
+        Outline o;
+        for (const Xz& p : simple) o.push_back({p.x(), p.y()});
+        return o;
+    };
+    SectionOutline outline;
+    for (const Part& part : section.parts()) {
+        OutlinePart drawn_part{drawn(part.outer), {}};
+        for (const Ring& hole : part.holes) drawn_part.holes.push_back(drawn(hole));
+        outline.push_back(std::move(drawn_part));
+    }
+    const auto same = std::find(scene.outlines.begin(), scene.outlines.end(), outline);
+    if (same != scene.outlines.end()) return static_cast<std::size_t>(same - scene.outlines.begin());
+    scene.outlines.push_back(std::move(outline));
+    return scene.outlines.size() - 1;
+}
+
 const Vec3& node_at(const std::map<std::string, Vec3>& nodes, const Json& name, const std::string& where) {
     const std::string n = text(name, where);
     const auto it = nodes.find(n);
@@ -193,6 +232,7 @@ Member parse_member(const Json& m, const std::string& where_in, const std::map<s
     const auto [width, depth] = section_extent(section);
     const double l = member.segment_length, mass = mu * l, rho = mu / elastic.area;
     member.first_body = scene.bodies.size();
+    const std::size_t outline = section_outline(section, elastic, scene);
     for (int k = 0; k < member.segments; ++k) {
         SceneBody body;
         body.name = member.name + "#" + std::to_string(k + 1);
@@ -203,6 +243,7 @@ Member parse_member(const Json& m, const std::string& where_in, const std::map<s
         body.inertia = Vec3{rho * l * elastic.Ixx + mass * l * l / 12, rho * l * (elastic.Ixx + elastic.Izz),
                             rho * l * elastic.Izz + mass * l * l / 12};
         body.structure = true;
+        body.outline = outline;
         scene.bodies.push_back(body);
     }
     for (int k = 0; k + 1 < member.segments; ++k) {

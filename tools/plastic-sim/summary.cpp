@@ -65,7 +65,7 @@ void write_nodes(std::ostream& out, const Scene& scene, const SimulationResult& 
 
 }  // namespace
 
-void write_json_summary(std::ostream& out, const Scene& scene, const SimulationResult& r, const std::string& engine) {
+nlohmann::json json_summary(const Scene& scene, const SimulationResult& r, const std::string& engine) {
     nlohmann::json j;
     j["time"] = r.time;
     j["steps"] = r.steps;
@@ -98,7 +98,11 @@ void write_json_summary(std::ostream& out, const Scene& scene, const SimulationR
     j["energy"] = {{"kinetic", e.kinetic},         {"gravitational", e.gravitational}, {"elastic", e.elastic},
                    {"dissipated", e.dissipated},   {"external_work", e.external_work}, {"initial", e.initial},
                    {"remainder", e.remainder()},   {"corrections", e.corrections}, {"handled", e.handled}};
-    out << j.dump(2) << '\n';
+    return j;
+}
+
+void write_json_summary(std::ostream& out, const Scene& scene, const SimulationResult& r, const std::string& engine) {
+    out << json_summary(scene, r, engine).dump(2) << '\n';
 }
 
 void write_text_summary(std::ostream& out, const Scene& scene, const SimulationResult& r, const std::string& engine) {
