@@ -17,6 +17,8 @@ packages=(
   nlohmann-json3-dev                   # JSON files
   pybind11-dev python3-dev python3-pytest  # the Python module and its tests (Debian's /usr/bin/python3)
   python3-numpy python3-distributed python3-pandas  # its arrays, sweeps on dask, tables
+  libjs-three libjs-chart.js           # three.js and Chart.js, inlined into the --html pages
+  chromium python3-pil                 # the pages' tests: headless Chromium, and PIL for their screenshots
 )
 
 missing=()
