@@ -155,6 +155,29 @@ class LiveBrowser:
             time.sleep(0.5)
         pytest.fail(f"{path}: no state {states} after {timeout_s} s")
 
+    def click(self, path, fragment, x, y, expression):
+        """Opens the page in a 1280 × 800 viewport (as the screenshots), clicks at (x, y) once it is
+        ready, and returns `expression` evaluated after the click."""
+        import time
+        target = self._call("Target.createTarget", {"url": "about:blank"})["targetId"]
+        session = self._call("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
+        self._call("Emulation.setDeviceMetricsOverride",
+                   {"width": WINDOW[0], "height": WINDOW[1], "deviceScaleFactor": 1, "mobile": False}, session)
+        self._call("Page.navigate", {"url": f"file://{os.path.abspath(path)}{fragment}"}, session)
+        ready = "document.getElementById('plascap-status') && document.getElementById('plascap-status').dataset.state"
+        for _ in range(120):
+            state = self._call("Runtime.evaluate", {"expression": ready, "returnByValue": True}, session)["result"].get("value")
+            if state in ("ready", "done", "error"):
+                break
+            time.sleep(0.25)
+        time.sleep(0.5)  # the first frame drawn
+        for kind in ("mousePressed", "mouseReleased"):
+            self._call("Input.dispatchMouseEvent", {"type": kind, "x": x, "y": y, "button": "left", "clickCount": 1}, session)
+        time.sleep(0.5)
+        value = self._call("Runtime.evaluate", {"expression": expression, "returnByValue": True}, session)["result"].get("value")
+        self._call("Target.closeTarget", {"targetId": target})
+        return value
+
     def close(self):
         self.process.kill()
         self.process.wait()

@@ -196,3 +196,23 @@ def test_a_section_page_it_cannot_read_says_why(browser, tmp_path):
     state, text, _ = browser.state(bad, budget_ms=5000)
     assert state["state"] == "error"
     assert text.startswith("This section report cannot be shown: its data is not a section-calc report"), text
+
+
+def test_a_click_on_a_broken_joint_shows_its_dofs_capacities_and_energy(browser, live_browser, tmp_path):
+    page, summary = replay(str(tmp_path), example("scenes/collapsing-stack.json"), "bullet", "--html-frames", "50")
+    shot = Image.open(browser.screenshot(page, str(tmp_path / "end.png"), "#end", budget_ms=10000)).convert("RGB")
+    state, _, _ = browser.state(page, "#end", budget_ms=10000)
+    lx0, ly0, lx1, ly1 = box_of(state, "legend")
+    left, top, right, _ = box_of(state, "view")
+    magenta = [(x, y) for x in range(left, right) for y in range(top, shot.height - 45)
+               if shot.getpixel((x, y)) == BROKEN and not (lx0 <= x < lx1 and ly0 <= y < ly1)]
+    assert magenta, "no broken joint drawn"
+    x, y = magenta[len(magenta) // 2]
+    info = live_browser.click(page, "#end", x, y, "JSON.stringify([document.getElementById('plascap-status').dataset.selected, "
+                                                 "document.getElementById('info').innerText])")
+    name, text = json.loads(info)
+    assert summary["joints"][name]["broken"], name
+    assert "now\tbroken" in text
+    assert "Mx\tplastic\t2.50 kN·m\t2.50 kN·m\trigid-plastic" in text  # the scene's 2,500 N·m, both ways
+    shown_kj = float(re.search(r"dissipated\t([0-9.]+) kJ", text).group(1))
+    assert shown_kj * 1e3 == pytest.approx(summary["joints"][name]["dissipated"], rel=5e-3)  # three digits
