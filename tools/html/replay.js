@@ -397,14 +397,14 @@
     function showInfo(j) {
       const joint = d.joints[j], at = frame * nj + j;
       const end = (d.summary && d.summary.joints[joint.name]) || {};
-      const names = ['none', 'elastic', 'yielding', 'broken', 'not engaged'];
+      const names = ['elastic', 'yielding', 'broken', 'not engaged'];  // by STATE
       const info = layout.info;
       info.textContent = '';
       element('h2', { text: 'Joint ' + joint.name }, info);
       const bodyName = function (i) { return i === null ? 'the world' : d.bodies[i].name; };
       const rows = [
         ['bodies', bodyName(joint.a) + ' – ' + bodyName(joint.b)],
-        ['now', names[r.states[at] + 1] + (r.states[at] === STATE.elastic || r.states[at] === STATE.yielding
+        ['now', names[r.states[at]] + (r.states[at] === STATE.elastic || r.states[at] === STATE.yielding
           ? ', load / capacity ' + (r.utilisation[at] / 100).toFixed(2) + (joint.coupled ? ' (coupled surface U)' : '') : '')],
         ['plastic displacement', si(r.plasticDisplacement[at], 'm') + ' (breaks at ' + si(joint.max_plastic_displacement, 'm') + ')'],
         ['plastic rotation', si(r.plasticRotation[at], 'rad') + ' (breaks at ' + si(joint.max_plastic_rotation, 'rad') + ')'],
@@ -544,16 +544,14 @@
       // headless browser's virtual time runs it too).
       let k = 0, started = performance.now();
       const next = function () {
-        if (k % 25 === 0 || k === r.frames - 1) {
-          showFrame(k);
-          updateCharts(true);  // the charts are not timed: a person's replay redraws them 4 times a second
-        }
         const t0 = performance.now();
         showFrame(k);
         draw();
         gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
         drawMs += performance.now() - t0;
         drawnTimed += 1;
+        // The charts are not timed: a person's replay redraws them 4 times a second.
+        if (k % 25 === 0 || k === r.frames - 1) updateCharts(true);
         k += 1;
         if (k < r.frames) {
           setTimeout(next, 0);

@@ -24,7 +24,6 @@ public:
     // Throws InputError when the budget allows fewer than 2 frames (--html-frames).
     ReplayRecorder(const Scene& scene, ReplayBudget budget);
 
-    std::size_t frame_count() const { return frame_steps_.size(); }  // as planned
     void record_start(const SceneEngine& engine, const EnergyLedger& energy);
     // After step number `steps_done` (1, 2, …): records a frame when one falls on it.
     void after_step(std::size_t steps_done, const SceneEngine& engine, const EnergyLedger& energy);
