@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "plascap/adapters/flow_criterion.hpp"
 #include "plascap/adapters/joint_frame.hpp"
@@ -432,6 +433,76 @@ TEST(CoupledYield, RigidPlasticRowBoundsFollowTheSurfaceAlongTheLastLoad) {
     moved[index(Dof::Mz)] = 0.01;
     law.settle(moved, moments(0, -10), 0.03);
     EXPECT_NEAR(law.dissipated(), 10 * 0.01, 1e-15);
+}
+
+// A sphere in (N, Mx, Mz): U = √((N/Cn)² + (Mx/C)² + (Mz/C)²), the other loads ignored; N rigid
+// and the moments plastic, as a structure's segment joint has them (docs/structures.md).
+class SphereInNMxMz final : public YieldCondition {
+public:
+    SphereInNMxMz(double cn, double c) : cn_(cn), c_(c) {}
+    YieldEvaluation evaluate(const PerDof<double>& l, YieldHint&) const override {
+        const double n = l[index(Dof::N)] / cn_, mx = l[index(Dof::Mx)] / c_, mz = l[index(Dof::Mz)] / c_;
+        YieldEvaluation e;
+        e.utilisation = std::sqrt(n * n + mx * mx + mz * mz);
+        if (e.utilisation > 0) {
+            e.gradient[index(Dof::N)] = n / (cn_ * e.utilisation);
+            e.gradient[index(Dof::Mx)] = mx / (c_ * e.utilisation);
+            e.gradient[index(Dof::Mz)] = mz / (c_ * e.utilisation);
+        }
+        return e;
+    }
+    PerDof<double> axis_capacity(bool) const override {
+        const double none = std::numeric_limits<double>::infinity();
+        return {none, cn_, none, c_, none, c_};
+    }
+
+private:
+    double cn_, c_;
+};
+
+PlasticJointSettings sphere_joint(std::optional<double> k) {
+    PlasticJointSettings s = circle_joint(10.0, k);
+    s.yield_condition = std::make_shared<SphereInNMxMz>(100.0, 10.0);
+    return s;
+}
+
+PerDof<double> axial(double n, double mx) {  // the row forces on b for section loads N, Mx
+    PerDof<double> f{};
+    f[index(Dof::N)] = -n, f[index(Dof::Mx)] = -mx;
+    return f;
+}
+
+// Cn = 100 N, C = 10 N·m. A rigid N loaded to 50 leaves each unloaded moment row the cross-polytope's
+// C·(1 − 50/100) = 5. Loaded past its axis capacity (200, which a rigid row lets through), N counts
+// as 0.9·Cn (kRigidShare): each row keeps C·(1 − 0.9) = 1, the same as at N = 90 — not the 0 that
+// made a fixed–fixed beam's catenary whirl its hinges.
+TEST(CoupledYield, ARigidDofsLoadCountsOnTheSurfaceUpToNinetyPercentOfItsAxis) {
+    const PerDof<double> zero{}, masses{1, 1, 1, 1, 1, 1};
+    for (const auto& [n, bound] : {std::pair{50.0, 5.0}, std::pair{90.0, 1.0}, std::pair{200.0, 1.0}, std::pair{-1e6, 1.0}}) {
+        PlasticJointLaw law(sphere_joint(std::nullopt));
+        law.start(zero);
+        law.settle(zero, axial(n, 0.0), 0.01);
+        const auto plan = law.plan(zero, 0.01, masses);
+        EXPECT_NEAR(plan[index(Dof::Mx)]->bound, bound, 1e-12) << "N = " << n;
+        EXPECT_NEAR(plan[index(Dof::Mz)]->bound, bound, 1e-12) << "N = " << n;
+    }
+}
+
+// Elastic-plastic moments (k = 1000 N·m/rad) beside a rigid N at 200 = 2·Cn: a spring load Mx = 4
+// is inside the surface at N = 0.9·Cn (U = √(0.81 + 0.16) < 1) and does not flow; Mx = 5 returns to
+// it, Mx = 10·√(1 − 0.81) = 4.359, Δθ_p = (5 − 4.359)/k (uncapped, U ≥ 2 would have flowed both).
+TEST(CoupledYield, ElasticPlasticMomentsBesideARigidDofPastItsAxisReturnToTheCappedSurface) {
+    const PerDof<double> zero{}, masses{1, 1, 1, 1, 1, 1};
+    for (const auto& [theta, flow] : {std::pair{0.004, 0.0}, std::pair{0.005, (5.0 - 10.0 * std::sqrt(0.19)) / 1000.0}}) {
+        PlasticJointLaw law(sphere_joint(1000.0));
+        law.start(zero);
+        law.plan(zero, 1e-3, masses);
+        PerDof<double> at{};
+        at[index(Dof::Mx)] = theta;
+        law.settle(at, axial(200.0, 0.0), 1e-3);
+        EXPECT_NEAR(law.law(Dof::Mx)->plastic_offset(), flow, 1e-9) << "Mx = " << 1000 * theta << " N m";
+        EXPECT_EQ(law.law(Dof::Mz)->plastic_offset(), 0.0);
+    }
 }
 
 // The report's utilisation: on the circle C = 10 the section load (6, 8) has U = |(6, 8)|/10 = 1

@@ -10,6 +10,18 @@ bool rigid_plastic(const ElasticPlasticLaw& law) { return law.regime() != Regime
 
 }  // namespace
 
+PerDof<double> surface_loads(const AxisCapacities& axes, const PerDof<double>& loads,
+                             const PerDof<ElasticPlasticLaw*>& laws) {
+    PerDof<double> s = loads;
+    for (std::size_t i = 0; i < kDofCount; ++i) {
+        if (laws[i] || s[i] == 0.0) continue;  // a plastic dof, or no load
+        const double reach = axes.at(i, s[i]);  // where the surface meets the axis on this side
+        if (reach > 0.0 && std::isfinite(reach))
+            s[i] = std::copysign(std::min(std::abs(s[i]), kRigidShare * reach), s[i]);
+    }
+    return s;
+}
+
 double cross_polytope_share(const AxisCapacities& axes, const PerDof<double>& loads) {
     double share = 0.0;
     for (std::size_t j = 0; j < kDofCount; ++j)
@@ -18,9 +30,10 @@ double cross_polytope_share(const AxisCapacities& axes, const PerDof<double>& lo
 }
 
 PerDof<std::optional<double>> coupled_hold_bounds(const YieldCondition& condition, const AxisCapacities& axes,
-                                                  YieldHint& hint, const PerDof<double>& loads,
+                                                  YieldHint& hint, const PerDof<double>& last_loads,
                                                   const PerDof<ElasticPlasticLaw*>& laws) {
     PerDof<std::optional<double>> bounds;
+    const PerDof<double> loads = surface_loads(axes, last_loads, laws);
     // Springs take no bound (their last regime decides; a dof that turns stiff this step holds at its
     // own capacity for that step).
     if (std::none_of(laws.begin(), laws.end(), [](const ElasticPlasticLaw* l) { return l && rigid_plastic(*l); })) return bounds;
@@ -54,7 +67,7 @@ PerDof<std::optional<double>> coupled_hold_bounds(const YieldCondition& conditio
 void coupled_return_mapping(const YieldCondition& condition, const AxisCapacities& axes, YieldHint& hint,
                             const PerDof<double>& positions, const PerDof<double>& applied_loads,
                             const PerDof<ElasticPlasticLaw*>& laws) {
-    PerDof<double> s = applied_loads;
+    PerDof<double> s = surface_loads(axes, applied_loads, laws);
     PerDof<double> k{};
     bool any = false;
     for (std::size_t i = 0; i < kDofCount; ++i) {
