@@ -1,11 +1,13 @@
 """What the page tests share: the tools (from CTest's environment), Debian's headless Chromium, and
 reading the state a page reports in its #plascap-status element."""
+import contextlib
 import html.parser
 import json
 import os
 import shutil
 import subprocess
 import tempfile
+import time
 
 import pytest
 
@@ -78,9 +80,24 @@ class Browser:
         return png
 
 
+@contextlib.contextmanager
+def chromium_profile(prefix):
+    """A profile directory, removed afterwards. Chromium's child processes can outlive the browser
+    for a moment and still write into it, so the removal is retried for a few seconds."""
+    profile = tempfile.mkdtemp(prefix=prefix)
+    try:
+        yield profile
+    finally:
+        for _ in range(20):
+            shutil.rmtree(profile, ignore_errors=True)
+            if not os.path.exists(profile):
+                break
+            time.sleep(0.25)
+
+
 @pytest.fixture(scope="session")
 def browser():
-    with tempfile.TemporaryDirectory(prefix="plascap-chromium-") as profile:
+    with chromium_profile("plascap-chromium-") as profile:
         yield Browser(profile)
 
 
@@ -142,7 +159,6 @@ class LiveBrowser:
 
     def state_when(self, path, fragment, states=("done", "error"), timeout_s=600):
         """Opens the page and returns its #plascap-status data once data-state is one of `states`."""
-        import time
         target = self._call("Target.createTarget", {"url": f"file://{os.path.abspath(path)}{fragment}"})["targetId"]
         session = self._call("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
         expression = "JSON.stringify(Object.assign({}, document.getElementById('plascap-status').dataset))"
@@ -158,7 +174,6 @@ class LiveBrowser:
     def click(self, path, fragment, x, y, expression):
         """Opens the page in a 1280 × 800 viewport (as the screenshots), clicks at (x, y) once it is
         ready, and returns `expression` evaluated after the click."""
-        import time
         target = self._call("Target.createTarget", {"url": "about:blank"})["targetId"]
         session = self._call("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
         self._call("Emulation.setDeviceMetricsOverride",
@@ -179,13 +194,19 @@ class LiveBrowser:
         return value
 
     def close(self):
-        self.process.kill()
-        self.process.wait()
+        """Asks chromium to quit, so that it stops its child processes (a kill leaves them writing
+        into the profile while it is removed); kills it if it has not quit within 20 s."""
+        try:
+            os.write(self._to_browser, json.dumps({"id": self._id + 1, "method": "Browser.close"}).encode() + b"\0")
+            self.process.wait(timeout=20)
+        except (OSError, subprocess.TimeoutExpired):
+            self.process.kill()
+            self.process.wait()
 
 
 @pytest.fixture(scope="session")
 def live_browser():
-    with tempfile.TemporaryDirectory(prefix="plascap-chromium-live-") as profile:
+    with chromium_profile("plascap-chromium-live-") as profile:
         browser = LiveBrowser(profile)
         yield browser
         browser.close()
