@@ -33,10 +33,10 @@ PerDof<std::optional<double>> coupled_hold_bounds(const YieldCondition& conditio
                                                   YieldHint& hint, const PerDof<double>& last_loads,
                                                   const PerDof<ElasticPlasticLaw*>& laws) {
     PerDof<std::optional<double>> bounds;
-    const PerDof<double> loads = surface_loads(axes, last_loads, laws);
     // Springs take no bound (their last regime decides; a dof that turns stiff this step holds at its
     // own capacity for that step).
     if (std::none_of(laws.begin(), laws.end(), [](const ElasticPlasticLaw* l) { return l && rigid_plastic(*l); })) return bounds;
+    const PerDof<double> loads = surface_loads(axes, last_loads, laws);
     const bool loaded = std::any_of(loads.begin(), loads.end(), [](double s) { return s != 0.0; });
     const double share = cross_polytope_share(axes, loads);
     // Far inside, the cross-polytope floors alone leave every row at least half its capacity above
