@@ -44,16 +44,22 @@ PerDof<double> PlasticJointLaw::continuous(const PerDof<double>& measured) const
     const std::size_t x = index(Dof::Mx), y = index(Dof::My), z = index(Dof::Mz);
     const auto unwrap = [&](double angle, std::size_t i) {
         const double step = angle - last_continuous_[i];
+        if (std::abs(step) < pi) return angle;  // within half a turn: no whole turn to take off
         return last_continuous_[i] + (step - turn * std::round(step / turn));
     };
     PerDof<double> same = measured, other = measured;
     same[x] = unwrap(measured[x], x), same[y] = unwrap(measured[y], y), same[z] = unwrap(measured[z], z);
     if (!euler_rows()) return same;
-    other[x] = unwrap(measured[x] + pi, x), other[y] = unwrap(pi - measured[y], y), other[z] = unwrap(measured[z] + pi, z);
     const auto distance = [&](const PerDof<double>& p) {
         return std::abs(p[x] - last_continuous_[x]) + std::abs(p[y] - last_continuous_[y]) + std::abs(p[z] - last_continuous_[z]);
     };
-    return distance(other) < distance(same) ? other : same;
+    // The other branch's θx and θz lie π − |Δx| and π − |Δz| from the last angles where this
+    // branch's lie |Δx| and |Δz|: its distance is at least 2π less this one's, so below π this
+    // branch is the nearer and the other need not be unwrapped.
+    const double same_distance = distance(same);
+    if (same_distance < pi) return same;
+    other[x] = unwrap(measured[x] + pi, x), other[y] = unwrap(pi - measured[y], y), other[z] = unwrap(measured[z] + pi, z);
+    return distance(other) < same_distance ? other : same;
 }
 
 void PlasticJointLaw::track(const PerDof<double>& measured, const PerDof<double>& continuous_positions) {
@@ -81,7 +87,8 @@ double twist_sign(const PerDof<double>& continuous_positions) {
 
 PerDof<std::optional<RowCommand>> PlasticJointLaw::plan(const PerDof<double>& measured, double dt,
                                                         const PerDof<double>& effective_masses) {
-    const PerDof<double> positions = continuous(measured);
+    // The adapters measure at the end of a step what the next step starts from: unwrapped then.
+    const PerDof<double> positions = measured == last_measured_ ? last_continuous_ : continuous(measured);
     track(measured, positions);
     PerDof<std::optional<RowCommand>> commands;
     PerDof<std::optional<double>> bounds;
@@ -126,6 +133,7 @@ bool PlasticJointLaw::settle(const PerDof<double>& measured, const PerDof<double
     if (settings_.yield_condition)
         detail::coupled_return_mapping(*settings_.yield_condition, {axis_positive_, axis_negative_}, hint_, positions,
                                        last_loads_, plastic_laws());
+    summarise();
     if (plastic_displacement() > settings_.max_plastic_displacement ||
         plastic_rotation() > settings_.max_plastic_rotation) {
         broken_at_ = time;
@@ -134,20 +142,16 @@ bool PlasticJointLaw::settle(const PerDof<double>& measured, const PerDof<double
     return false;
 }
 
-double PlasticJointLaw::accumulated(bool rotations) const {
-    double sum = 0.0;
+void PlasticJointLaw::summarise() {
+    summary_ = {};
     for (Dof dof : kAllDofs) {
-        if (is_rotation(dof) == rotations && laws_[index(dof)]) sum += laws_[index(dof)]->accumulated_plastic();
+        const auto& law = laws_[index(dof)];
+        if (!law) continue;
+        (is_rotation(dof) ? summary_.plastic_rotation : summary_.plastic_displacement) += law->accumulated_plastic();
+        summary_.at_capacity = summary_.at_capacity || law->at_capacity();
+        summary_.near_capacity = summary_.near_capacity || law->near_capacity();
     }
-    return sum;
 }
-
-bool PlasticJointLaw::any_law(bool (ElasticPlasticLaw::*test)() const) const {
-    return std::any_of(laws_.begin(), laws_.end(), [test](const auto& law) { return law && ((*law).*test)(); });
-}
-
-double PlasticJointLaw::plastic_displacement() const { return accumulated(false); }
-double PlasticJointLaw::plastic_rotation() const { return accumulated(true); }
 
 double PlasticJointLaw::dissipated() const {
     double sum = 0.0;

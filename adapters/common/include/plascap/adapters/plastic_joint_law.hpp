@@ -43,12 +43,12 @@ public:
 
     bool broken() const { return broken_at_.has_value(); }
     // A rigid-plastic row was at its bound in the last step (flowing or not).
-    bool at_capacity() const { return any_law(&ElasticPlasticLaw::at_capacity); }
+    bool at_capacity() const { return summary_.at_capacity; }
     // A rigid-plastic row carried at least half its bound in the last step.
-    bool near_capacity() const { return any_law(&ElasticPlasticLaw::near_capacity); }
+    bool near_capacity() const { return summary_.near_capacity; }
     std::optional<double> broken_at() const { return broken_at_; }
-    double plastic_displacement() const;  // Σ over translations of Σ|Δx_p| [m]
-    double plastic_rotation() const;      // Σ over rotations [rad]
+    double plastic_displacement() const { return summary_.plastic_displacement; }  // Σ over translations of Σ|Δx_p| [m]
+    double plastic_rotation() const { return summary_.plastic_rotation; }          // Σ over rotations [rad]
     double dissipated() const;            // [J]
     double elastic_energy(const PerDof<double>& positions) const;  // [J]
     // How close the last step's loads came to what the joint carries: U of the coupled condition, or
@@ -59,8 +59,13 @@ public:
     const PlasticJointSettings& settings() const { return settings_; }
 
 private:
-    double accumulated(bool rotations) const;
-    bool any_law(bool (ElasticPlasticLaw::*test)() const) const;  // of the plastic dofs' laws
+    // What the dof laws say after a settle: kept, not recomputed, because the driver and the
+    // adapters ask every step for every joint (issue 16: their cost per joint).
+    struct Summary {
+        double plastic_displacement = 0.0, plastic_rotation = 0.0;
+        bool at_capacity = false, near_capacity = false;
+    };
+    void summarise();
 
     PerDof<ElasticPlasticLaw*> plastic_laws();
     // The measured positions with the rotations unwrapped against the last ones seen (angles wrap at ±π).
@@ -77,6 +82,7 @@ private:
     YieldHint hint_;
     PerDof<double> last_measured_{}, last_continuous_{};
     PerDof<double> axis_positive_{}, axis_negative_{};  // the condition's axis capacities
+    Summary summary_;
 };
 
 }  // namespace plascap
