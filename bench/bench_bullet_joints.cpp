@@ -1,5 +1,5 @@
 // The Bullet adapter's cost (issue 16): one world step with n plastic joints against the same scene
-// with n btFixedConstraint, measured in the same run (counter vs_rigid; goal ≤ 1.15 for rigid-plastic
+// with n btFixedConstraint, timed interleaved with it (counter vs_rigid; goal ≤ 1.15 for rigid-plastic
 // and elastic-plastic joints, one solve and per island), and the cost per joint from 100 to 10,000
 // joints (ns_per_joint). Run: build/bench/bench_bullet_joints (docs/adapters.md, "Cost").
 #include <benchmark/benchmark.h>
@@ -58,35 +58,28 @@ struct FixedJoints {
     }
 };
 
-double rigid_seconds(int n, bool split) {
-    return bench::cached_baseline(n, split, [&] {
-        HangingBoxes scene(n, split, plascap::BulletSolverKind::Bullet);
-        FixedJoints fixed(scene);
-        return bench::seconds_per_step([&] { scene.world.step(kDt); }, n);
-    });
-}
-
 // Arguments: joints, split islands (1 = Bullet's default per-island solve, 0 = one solve).
 void Fixed(benchmark::State& state) {
     const int n = static_cast<int>(state.range(0));
     const bool split = state.range(1) == 1;
     HangingBoxes scene(n, split, plascap::BulletSolverKind::Bullet);  // the engine as it comes
     FixedJoints fixed(scene);
-    bench::time_baseline(state, [&] { scene.world.step(kDt); }, n, split);
+    bench::time_baseline(state, [&] { scene.world.step(kDt); }, n);
 }
 
 // One plastic joint of type Joint per box with `settings`; times the world's steps.
 template <class Joint>
 void step_with_joints(benchmark::State& state, int n, bool split, const plascap::PlasticJointSettings& settings,
                       plascap::BulletSolverKind solver = plascap::BulletSolverKind::Plascap) {
-    const double rigid = rigid_seconds(n, split);
+    HangingBoxes rigid(n, split, plascap::BulletSolverKind::Bullet);  // the baseline: the engine as it comes
+    FixedJoints fixed(rigid);
     HangingBoxes scene(n, split, solver);
     std::vector<std::unique_ptr<Joint>> joints;
     for (int i = 0; i < n; ++i) {
         joints.push_back(std::make_unique<Joint>(nullptr, scene.boxes[i]->body(), scene.anchor(i), settings));
         joints.back()->attach(scene.world.world(), kDt);
     }
-    bench::time_steps(state, [&] { scene.world.step(kDt); }, rigid, n);
+    bench::time_steps(state, [&] { scene.world.step(kDt); }, [&] { rigid.world.step(kDt); }, n);
     joints.clear();  // each joint leaves the world as it is destroyed
 }
 
