@@ -20,8 +20,7 @@ struct HangingBoxes {
     dWorldID world;
     std::vector<dBodyID> boxes;
     explicit HangingBoxes(int n) {
-        static const bool initialised = dInitODE2(0) != 0;  // once: a variant's scene and its baseline's live together
-        (void)initialised;
+        [[maybe_unused]] static const bool initialised = dInitODE2(0) != 0;  // once: a variant's scene and its baseline's live together
         world = dWorldCreate();
         dWorldSetGravity(world, 0, -9.81, 0);
         dWorldSetQuickStepNumIterations(world, 10);

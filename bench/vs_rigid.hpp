@@ -33,7 +33,8 @@ inline double median(std::vector<double> values) {
 template <class Step, class Baseline>
 double interleaved_ratio(Step&& step, Baseline&& baseline, int joints) {
     const int per_batch = std::max(5, 20000 / joints);
-    batch_seconds(step, 3), batch_seconds(baseline, 3);
+    batch_seconds(step, 3);  // warm-up
+    batch_seconds(baseline, 3);
     std::vector<double> ratios;
     for (int round = 0; round < 7; ++round) {
         const double own = batch_seconds(step, per_batch);
