@@ -1,6 +1,7 @@
 // The swing–twist measure of a joint's rotation (swing_twist.hpp): its angles for rotations whose
 // decomposition is known by construction, its gradients against finite differences of the angles
-// themselves, and no jump where Euler angles have one (a 90° twist).
+// themselves, and no jump where Euler angles have one (a 90° twist); and the joint measured from two
+// bodies' world poses (measure_joint_swing_twist, what the Bullet and ODE rows act along).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -80,6 +81,47 @@ TEST(SwingTwist, TwistingThroughNinetyDegreesUnderABendIsSmooth) {
         }
         last_twist = st.angles[1];
     }
+}
+
+TEST(SwingTwist, JointMeasuredFromWorldPosesHasRowsAlongTheAnglesWorldGradients) {
+    // Frames a and b anywhere in the world (the joint's frame as each body carries it): the positions
+    // are b's anchor seen from a and the swing and twist of b seen from a; turning b by a small δ
+    // about a world axis k moves each angle by δ·(its row's axis)[k] (central differences), which is
+    // what a row along that axis measures, whatever a's own orientation.
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0), angle(0.0, 2.5), twist(-3.1, 3.1);
+    const double delta = 1e-6;
+    double worst_rate = 0.0, worst_position = 0.0;
+    for (int trial = 0; trial < 100; ++trial) {
+        Pose a, b;
+        a.rotation = rotation({unit(random), unit(random), unit(random)}, angle(random));
+        a.origin = {unit(random), unit(random), unit(random)};
+        const Mat3 b_in_a = times(rotation({unit(random), 0.0, unit(random)}, angle(random)), rotation({0, 1, 0}, twist(random)));
+        b.rotation = times(a.rotation, b_in_a);
+        b.origin = {unit(random), unit(random), unit(random)};
+        const JointFrameState s = measure_joint_swing_twist(a, b);
+        const SwingTwist direct = swing_twist(b_in_a);
+        for (int i = 0; i < 3; ++i) {
+            const Vec3 offset = difference(b.origin, a.origin);
+            const double along = offset[0] * a.rotation[0][i] + offset[1] * a.rotation[1][i] + offset[2] * a.rotation[2][i];
+            worst_position = std::max({worst_position, std::abs(s.positions[i] - along),
+                                       std::abs(s.positions[i + 3] - direct.angles[i])});
+        }
+        for (int k = 0; k < 3; ++k) {
+            Vec3 e{};
+            e[k] = 1.0;
+            Pose ahead = b, behind = b;
+            ahead.rotation = times(rotation(e, delta), b.rotation);
+            behind.rotation = times(rotation(e, -delta), b.rotation);
+            const JointFrameState sa = measure_joint_swing_twist(a, ahead), sb = measure_joint_swing_twist(a, behind);
+            for (int i = 0; i < 3; ++i) {
+                const double step = std::remainder(sa.positions[i + 3] - sb.positions[i + 3], 2.0 * std::acos(-1.0));
+                worst_rate = std::max(worst_rate, std::abs(step / (2.0 * delta) - s.axes.rotation[i][k]));
+            }
+        }
+    }
+    EXPECT_LT(worst_position, 1e-12);
+    EXPECT_LT(worst_rate, 1e-6);
 }
 
 }  // namespace

@@ -12,6 +12,11 @@ btVector3 to_bt(const Vec3& v) { return {btScalar(v[0]), btScalar(v[1]), btScala
 
 constexpr double kTurn = 2.0 * 3.14159265358979323846;  // [rad]
 
+Pose to_pose(const btTransform& t) {
+    const btMatrix3x3& r = t.getBasis();
+    return {to_vec3(t.getOrigin()), {to_vec3(r[0]), to_vec3(r[1]), to_vec3(r[2])}};  // rows
+}
+
 void store(btScalar* at, const btVector3& v) {
     at[0] = v.x(), at[1] = v.y(), at[2] = v.z();
 }
@@ -49,20 +54,7 @@ const JointFrameState& BulletPlasticConstraint::measure() {
     const btTransform& b = m_rbB.getCenterOfMassTransform();
     if (measured_ && a == measured_a_ && b == measured_b_) return state_;
     measured_a_ = a, measured_b_ = b, measured_ = true;
-    const btTransform frame_a = a * frame_in_a_, frame_b = b * frame_in_b_;
-    const btMatrix3x3& ra = frame_a.getBasis();
-    const btMatrix3x3 b_in_a = ra.transposeTimes(frame_b.getBasis());
-    const btVector3 offset = ra.transpose() * (frame_b.getOrigin() - frame_a.getOrigin());
-    Mat3 r{};
-    for (int i = 0; i < 3; ++i) r[i] = to_vec3(b_in_a[i]);
-    const SwingTwist st = swing_twist(r);
-    for (int i = 0; i < 3; ++i) {
-        state_.positions[i] = offset[i];
-        state_.positions[i + 3] = st.angles[i];
-        state_.axes.translation[i] = to_vec3(ra.getColumn(i));
-        state_.axes.rotation[i] = to_vec3(ra * to_bt(st.gradients[i]));  // a's frame to the world
-    }
-    state_.axes.anchor = to_vec3(frame_b.getOrigin());
+    state_ = measure_joint_swing_twist(to_pose(a * frame_in_a_), to_pose(b * frame_in_b_));
     return state_;
 }
 

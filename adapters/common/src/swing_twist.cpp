@@ -35,4 +35,20 @@ SwingTwist swing_twist(const Mat3& r) {
     return st;
 }
 
+JointFrameState measure_joint_swing_twist(const Pose& frame_on_a, const Pose& frame_on_b) {
+    const Pose b_in_a = relative(frame_on_a, frame_on_b);
+    const SwingTwist st = swing_twist(b_in_a.rotation);
+    const Mat3& a = frame_on_a.rotation;  // rows; its columns are a's axes in the world
+    JointFrameState s;
+    for (std::size_t i = 0; i < 3; ++i) {
+        s.positions[i] = b_in_a.origin[i];
+        s.positions[i + 3] = st.angles[i];
+        s.axes.translation[i] = {a[0][i], a[1][i], a[2][i]};
+        const Vec3& g = st.gradients[i];  // in a's frame: to the world
+        s.axes.rotation[i] = {dot(a[0], g), dot(a[1], g), dot(a[2], g)};
+    }
+    s.axes.anchor = frame_on_b.origin;
+    return s;
+}
+
 }  // namespace plascap

@@ -4,9 +4,14 @@
 
 #include "plascap/adapters/joint_loads.hpp"
 #include "plascap/adapters/row_effective_mass.hpp"
+#include "plascap/adapters/swing_twist.hpp"
 
 namespace plascap {
 namespace {
+
+// What ODE's rows measure and carry: swing and twist (swing_twist.hpp) on the AMotor's rows, as on
+// plascap's Bullet constraint, and a motor's one symmetric bound.
+constexpr RowCapabilities kOdeRows{RotationMeasure::SwingTwist, false};
 
 // As in the Bullet adapter: a Push row asks for an unreachable speed and so ends on its bound.
 constexpr double kPushSpeed = 1e4;
@@ -74,7 +79,7 @@ void add(WorldLoad& load, const dJointFeedback& fb) {
 
 OdePlasticJoint::OdePlasticJoint(dWorldID world, dBodyID a, dBodyID b, const Pose& frame_in_world,
                                  const PlasticJointSettings& settings)
-    : world_(world), a_(a), b_(b), driver_(settings) {
+    : world_(world), a_(a), b_(b), driver_(settings, kOdeRows) {
     frame_on_a_ = a ? relative(pose_of(a), frame_in_world) : frame_in_world;
     frame_on_b_ = relative(pose_of(b), frame_in_world);
     bool any_rotation_row = false;
@@ -114,7 +119,7 @@ void OdePlasticJoint::engage(double now) {
 
 JointFrameState OdePlasticJoint::measure() const {
     const Pose on_a = a_ ? compose(pose_of(a_), frame_on_a_) : frame_on_a_;
-    return measure_joint(on_a, compose(pose_of(b_), frame_on_b_));
+    return measure_joint_swing_twist(on_a, compose(pose_of(b_), frame_on_b_));
 }
 
 void OdePlasticJoint::before_step(double dt) {
@@ -136,14 +141,18 @@ void OdePlasticJoint::set_rotation_rows(const JointFrameState& state, const PerD
     static constexpr int kVel[3] = {dParamVel1, dParamVel2, dParamVel3};
     static constexpr int kFMax[3] = {dParamFMax1, dParamFMax2, dParamFMax3};
     for (int i = 0; i < 3; ++i) {
-        const Vec3& axis = state.axes.rotation[i];
-        dJointSetAMotorAxis(rotations_, i, 0, axis[0], axis[1], axis[2]);  // rel 0: world axes
+        // ODE normalises an AMotor axis, and a row along the unit direction n = g/|g| of an angle's
+        // gradient g measures n·ω = θ̇/|g| and applies, with a moment λ·n, the generalised force
+        // λ/|g| (swing_twist.hpp): its target rate is the angle's over |g|, its bound the dof's times |g|.
+        const Vec3& gradient = state.axes.rotation[i];
+        const double length = norm(gradient);
+        dJointSetAMotorAxis(rotations_, i, 0, gradient[0], gradient[1], gradient[2]);  // rel 0: world axes
         const std::size_t dof = 3 + static_cast<std::size_t>(i);
         const RowSetting row =
             row_setting(driver_.law().mode(kAllDofs[dof]), commands[dof], state.positions[dof],
                         driver_.engaged_positions()[dof], dt);
-        dJointSetAMotorParam(rotations_, kVel[i], row.velocity);
-        dJointSetAMotorParam(rotations_, kFMax[i], row.bound);
+        dJointSetAMotorParam(rotations_, kVel[i], row.velocity / length);
+        dJointSetAMotorParam(rotations_, kFMax[i], row.bound * length);
     }
 }
 

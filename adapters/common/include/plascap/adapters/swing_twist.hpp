@@ -22,4 +22,11 @@ struct SwingTwist {
 // `b_in_a`: b's frame seen from a's (columns: b's axes in a's coordinates).
 SwingTwist swing_twist(const Mat3& b_in_a);
 
+// The joint from the world poses of its frame as carried by a and by b, with swing–twist rotations:
+// translations as measure_joint (joint_frame.hpp: components along a's axes of b's anchor minus a's),
+// rotations (φx, τ, φz), and each rotation row along its angle's gradient in the world (not of unit
+// length): a row along it measures the angle's rate, and a moment decomposed along the three is the
+// angles' generalised forces. Every engine adapter whose rows are swing and twist measures with it.
+JointFrameState measure_joint_swing_twist(const Pose& frame_on_a, const Pose& frame_on_b);
+
 }  // namespace plascap

@@ -2,7 +2,9 @@
 // A plastic joint in an unmodified ODE (double precision), driving ODE rows from the shared
 // PlasticJointLaw (adapters/common), as the Bullet adapter drives Bullet's:
 //   rotations: one dJointTypeAMotor in user mode whose three axes are reset every step to the
-//     joint's Euler row axes (joint_frame.hpp), so a dof means the same in both engines;
+//     directions of the swing and twist angles' gradients (swing_twist.hpp), as plascap's Bullet
+//     constraint measures them, so a dof means the same in both engines and there is no Euler
+//     singularity at a 90° twist;
 //   translations: ODE's LMotor applies its rows at the midpoint between the bodies' centres, not at
 //     the anchor, so the translation rows are the two tangential rows of contact joints placed at
 //     the anchor each step (their bounds are forces, their target velocities set; the contact's own
