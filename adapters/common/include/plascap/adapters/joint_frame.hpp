@@ -1,7 +1,9 @@
 #pragma once
 // Where a joint is, from the world poses of its frame as carried by body a and by body b: the dof
-// positions, and the axes its rows act along. Bullet's 6-dof constraints compute the same inside
-// Bullet; engines without them (ODE) use this, so both define a dof position alike:
+// positions, and the axes its rows act along, as Euler angles: Bullet's 6-dof spring constraints
+// compute the same inside Bullet, and this defines it for engine-neutral code and tests alike.
+// plascap's own Bullet constraint and the ODE adapter measure swing and twist instead
+// (measure_joint_swing_twist, swing_twist.hpp), which has no singularity at a 90° twist.
 //   translations: the components, along frame a's axes, of b's anchor minus a's;
 //   rotations: the angles of R = Aᵀ·B = Rz(θz)·Ry(θy)·Rx(θx), right-handed (Bullet's XYZ order
 //   seen from b, sign-corrected), exact for any turn short of θy = ±90°.
