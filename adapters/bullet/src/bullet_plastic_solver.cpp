@@ -41,48 +41,53 @@ btScalar resolve_push(btSolverBody& a, btSolverBody& b, btSolverConstraint& row)
 
 }  // namespace
 
+template <class Act>
+void BulletPlasticSolver::for_each_row(Act&& act) {
+    for (const PlascapRows& joint : joints_) {
+        for (int k = 0; k < joint.count; ++k)
+            act(*joint.constraint, static_cast<std::size_t>(k), m_tmpSolverNonContactConstraintPool[joint.first + k]);
+    }
+}
+
 void BulletPlasticSolver::convertJoints(btTypedConstraint** constraints, int count, const btContactSolverInfo& info) {
     const bool split = info.m_splitImpulse != 0;
-    plascap_.assign(static_cast<std::size_t>(count), nullptr);
+    joints_.clear();
     for (int i = 0; i < count; ++i) {
         if (BulletPlasticConstraint* c = plascap_constraint(constraints[i])) {
-            c->split_corrections(split);
-            plascap_[static_cast<std::size_t>(i)] = c;
+            c->split_corrections(split);  // before Bullet's getInfo2 writes the rows
+            joints_.push_back({c, i, 0, 0});
         }
     }
     btSequentialImpulseConstraintSolver::convertJoints(constraints, count, info);
-    // This solve's plascap rows: Bullet lays each constraint's rows out in turn, in the order its
-    // getInfo2 wrote them. A Push row's bounds are its force: its first iteration applies it.
-    rows_.clear();
-    largest_correction_ = 0.0;
+    // Each constraint's rows follow those of every constraint before it in the list.
     int at = 0;
-    for (int i = 0; i < count; ++i) {
-        const int n = m_tmpConstraintSizesPool[i].m_numConstraintRows;
-        if (BulletPlasticConstraint* c = plascap_[static_cast<std::size_t>(i)]) {
-            for (std::size_t k = 0; k < static_cast<std::size_t>(n); ++k)
-                rows_.push_back({at + static_cast<int>(k), c, k, c->holds_position(k)});
+    auto next = joints_.begin();
+    for (int i = 0; i < count && next != joints_.end(); ++i) {
+        const int rows = m_tmpConstraintSizesPool[i].m_numConstraintRows;
+        if (i == next->index) {
+            next->first = at, next->count = rows;
+            ++next;
         }
-        at += n;
+        at += rows;
     }
-    for (PlascapRow& r : rows_) {
-        if (!r.holds_position) continue;
-        btSolverConstraint& row = m_tmpSolverNonContactConstraintPool[r.row];
+    largest_correction_ = 0.0;
+    // A Push row's bounds are its force: its first iteration applies it, and it needs no more.
+    for_each_row([&](BulletPlasticConstraint& c, std::size_t k, btSolverConstraint& row) {
+        if (!c.holds_position(k)) return;
         if (split) {
-            const double rate = r.constraint->correction_rate(r.k);
+            const double rate = c.correction_rate(k);
             row.m_rhsPenetration = rate * row.m_jacDiagABInv;
             largest_correction_ = std::max(largest_correction_, std::abs(rate));
-            r.rate_per_impulse = row.m_jacDiagABInv > 0.0 ? 1.0 / row.m_jacDiagABInv : 0.0;
         }
         // The warm start, as resolveSingleConstraintRowGeneric applies an impulse.
-        const btScalar impulse =
-            std::clamp<btScalar>(r.constraint->carried_force(r.k) * info.m_timeStep, row.m_lowerLimit, row.m_upperLimit);
-        if (impulse == 0.0) continue;
+        const btScalar impulse = std::clamp<btScalar>(c.carried_force(k) * info.m_timeStep, row.m_lowerLimit, row.m_upperLimit);
+        if (impulse == 0.0) return;
         row.m_appliedImpulse = impulse;
         btSolverBody& a = m_tmpSolverBodyPool[row.m_solverBodyIdA];
         btSolverBody& b = m_tmpSolverBodyPool[row.m_solverBodyIdB];
         a.internalApplyImpulse(row.m_contactNormal1 * a.internalGetInvMass(), row.m_angularComponentA, impulse);
         b.internalApplyImpulse(row.m_contactNormal2 * b.internalGetInvMass(), row.m_angularComponentB, impulse);
-    }
+    });
 }
 
 void BulletPlasticSolver::solveGroupCacheFriendlySplitImpulseIterations(
@@ -95,21 +100,20 @@ void BulletPlasticSolver::solveGroupCacheFriendlySplitImpulseIterations(
     // corrections are nil).
     for (int iteration = 0; iteration < push_iterations(info); ++iteration) {
         btScalar largest = 0.0;  // of the impulse changes over the effective masses: rate changes
-        for (const PlascapRow& p : rows_) {
-            if (!p.holds_position) continue;
-            btSolverConstraint& row = m_tmpSolverNonContactConstraintPool[p.row];
-            largest = std::max(largest, resolve_push(m_tmpSolverBodyPool[row.m_solverBodyIdA], m_tmpSolverBodyPool[row.m_solverBodyIdB], row) *
-                                            p.rate_per_impulse);
-        }
+        for_each_row([&](BulletPlasticConstraint& c, std::size_t k, btSolverConstraint& row) {
+            if (!c.holds_position(k)) return;
+            const btScalar change = resolve_push(m_tmpSolverBodyPool[row.m_solverBodyIdA], m_tmpSolverBodyPool[row.m_solverBodyIdB], row);
+            if (row.m_jacDiagABInv > 0.0) largest = std::max(largest, change / row.m_jacDiagABInv);
+        });
         if (largest < kPushConverged) break;
     }
 }
 
 btScalar BulletPlasticSolver::solveGroupCacheFriendlyFinish(btCollisionObject** bodies, int count,
                                                              const btContactSolverInfo& info) {
-    for (const PlascapRow& r : rows_) {
-        r.constraint->carry_force(r.k, m_tmpSolverNonContactConstraintPool[r.row].m_appliedImpulse / info.m_timeStep);
-    }
+    for_each_row([&](BulletPlasticConstraint& c, std::size_t k, btSolverConstraint& row) {
+        c.carry_force(k, row.m_appliedImpulse / info.m_timeStep);
+    });
     if (info.m_splitImpulse) {
         // A push moves a body by δ = v_push·h (and turns it by ω_turn·turnErp·h, as Bullet integrates
         // it) without a velocity: the forces on it do F·δ of work that no row did.

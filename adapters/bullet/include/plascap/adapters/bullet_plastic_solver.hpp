@@ -43,20 +43,24 @@ protected:
     btScalar solveGroupCacheFriendlyFinish(btCollisionObject** bodies, int count, const btContactSolverInfo& info) override;
 
 private:
-    // A row of a BulletPlasticConstraint; its force is carried to the next step. One that holds a
-    // position (Lock, Hold) is warm-started and pushed; a Push row applies its force and needs neither.
-    struct PlascapRow {
-        int row;  // in m_tmpSolverNonContactConstraintPool
+    // A BulletPlasticConstraint of this solve and where its rows lie in
+    // m_tmpSolverNonContactConstraintPool (Bullet lays each constraint's rows out in turn, in the
+    // order its getInfo2 wrote them). One record per joint, not per row: the passes over the rows
+    // read them where the solve keeps them (issue 16: a per-row list, rebuilt each step and read
+    // twice, cost the warm-started solve most of its extra cache misses).
+    struct PlascapRows {
         BulletPlasticConstraint* constraint;
-        std::size_t k;  // the constraint's k-th written row
-        bool holds_position = false;
-        double rate_per_impulse = 0.0;  // J·M⁻¹·Jᵀ
+        int index;  // in this solve's list of constraints
+        int first;  // its first row in the pool
+        int count;
     };
-    std::vector<PlascapRow> rows_;  // this solve's
+    std::vector<PlascapRows> joints_;  // this solve's
+    // Calls `act(constraint, k, row)` for each row of this solve's plascap constraints.
+    template <class Act>
+    void for_each_row(Act&& act);
     // The push iterations per solve: half the velocity solve's (the corrections need not converge
     // in one step; what is left is corrected in the next).
     static int push_iterations(const btContactSolverInfo& info) { return std::max(1, info.m_numIterations / 2); }
-    std::vector<BulletPlasticConstraint*> plascap_;  // per constraint of this solve; nullptr: not plascap's
     double largest_correction_ = 0.0;                // of the pushed rows' rates [m/s | rad/s]
     double correction_work_ = 0.0;
 };
