@@ -35,8 +35,8 @@ void ElasticPlasticLaw::start(double position) {
 
 RowCommand ElasticPlasticLaw::plan(double position, double dt, double effective_mass, std::optional<double> joint_bound) {
     planned_position_ = position, planned_dt_ = dt, planned_mass_ = effective_mass;
-    regime_ = choose_regime(law_.stiffness, effective_mass, dt);
     omega_dt_ = spring_omega_dt(law_.stiffness, effective_mass, dt);
+    regime_ = regime_for(law_.stiffness.has_value(), omega_dt_);  // eq. 3.2
     if (regime_ != Regime::ElasticPlastic) {
         // Paper §2: target velocity 0, force bounded by the capacity; plus the correction.
         RowCommand hold;
@@ -58,14 +58,6 @@ RowCommand ElasticPlasticLaw::plan(double position, double dt, double effective_
     push.kind = RowCommand::Kind::Push;
     push.force = force;
     return push;
-}
-
-double ElasticPlasticLaw::hold_bound() const {
-    // A row's bound is symmetric, so take the capacity on the side the dof was last loaded; before
-    // any load, the smaller one.
-    if (last_force_ < 0.0) return law_.capacity_positive;
-    if (last_force_ > 0.0) return law_.capacity_negative;
-    return std::min(law_.capacity_positive, law_.capacity_negative);
 }
 
 void ElasticPlasticLaw::settle(double position, double applied_force) {

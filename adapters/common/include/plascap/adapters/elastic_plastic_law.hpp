@@ -76,7 +76,13 @@ public:
     double elastic_energy(double position) const;
 
 private:
-    double hold_bound() const;
+    // A row's bound is symmetric, so take the capacity on the side the dof was last loaded; before
+    // any load, the smaller one.
+    double hold_bound() const {
+        if (last_force_ < 0.0) return law_.capacity_positive;
+        if (last_force_ > 0.0) return law_.capacity_negative;
+        return law_.capacity_positive < law_.capacity_negative ? law_.capacity_positive : law_.capacity_negative;
+    }
     void settle_rigid_plastic(double position, double applied_force);
     void settle_elastic_plastic(double position);
 

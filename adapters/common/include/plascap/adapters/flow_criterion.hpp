@@ -42,7 +42,16 @@ public:
     // After a step: the row's force as a signed share of its bound on that side (±1 at the bound),
     // and the share of the bound it would take to stop, in one step, the motion the step let
     // through. True when the row flowed in the step.
-    bool flowed(double share, double stopping_share);
+    // Inline: every rigid-plastic dof asks every step (issue 16).
+    bool flowed(double share, double stopping_share) {
+        mean_share_ += kMeanShareWeight * (share - mean_share_);  // exponential moving mean
+        last_share_ = share;
+        const bool continues = flowing_ * share > 0.0;  // the step before flowed, on this side
+        const bool sustained = std::abs(mean_share_) >= kConfirmedShare && mean_share_ * share > 0.0;
+        const bool beyond_noise = stopping_share >= kBeyondNoise;
+        flowing_ = at_bound() && (continues || sustained || beyond_noise) ? share : 0.0;
+        return flowing_ != 0.0;
+    }
 
     double last_share() const { return last_share_; }                      // of the last step
     bool at_bound() const { return std::abs(last_share_) >= kAtCapacity; }  // in the last step
