@@ -69,6 +69,7 @@ void BulletPlasticConstraint::getInfo2(btConstraintInfo2* info) {
     const btVector3 lever_a = anchor - m_rbA.getCenterOfMassPosition();
     const btVector3 lever_b = anchor - m_rbB.getCenterOfMassPosition();
     const btScalar erp = stop_erp_ >= 0.0 ? stop_erp_ : info->erp;
+    const btScalar step = 1.0 / info->fps;  // bounds are impulses over the step: one division, not two a row
     int r = 0;
     for (std::size_t i = 0; i < rows_.size(); ++i) {
         Row& row = rows_[i];
@@ -95,8 +96,8 @@ void BulletPlasticConstraint::getInfo2(btConstraintInfo2* info) {
             info->cfm[at] = stop_cfm_;
         } else {
             row.correction = row.kind == RowKind::Hold ? row.target : 0.0;
-            info->m_lowerLimit[at] = row.lower / info->fps;
-            info->m_upperLimit[at] = row.upper / info->fps;
+            info->m_lowerLimit[at] = row.lower * step;
+            info->m_upperLimit[at] = row.upper * step;
         }
         info->m_constraintError[at] = split_corrections_ ? 0.0 : row.correction;
         written_dof_[static_cast<std::size_t>(r)] = i;

@@ -111,8 +111,9 @@ void BulletPlasticSolver::solveGroupCacheFriendlySplitImpulseIterations(
 
 btScalar BulletPlasticSolver::solveGroupCacheFriendlyFinish(btCollisionObject** bodies, int count,
                                                              const btContactSolverInfo& info) {
+    const btScalar per_second = 1.0 / info.m_timeStep;  // impulse over the step → force
     for_each_row([&](BulletPlasticConstraint& c, std::size_t k, btSolverConstraint& row) {
-        c.carry_force(k, row.m_appliedImpulse / info.m_timeStep);
+        c.carry_force(k, row.m_appliedImpulse * per_second);
     });
     if (info.m_splitImpulse) {
         // A push moves a body by δ = v_push·h (and turns it by ω_turn·turnErp·h, as Bullet integrates
