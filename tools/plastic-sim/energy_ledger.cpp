@@ -35,6 +35,7 @@ EnergyAccount::EnergyAccount(const Scene& scene, const SceneEngine& engine) : sc
 void EnergyAccount::after_step(SceneEngine& engine, const std::vector<AppliedLoad>& loads) {
     EnergyLedger& l = ledger_;
     l.kinetic = l.gravitational = l.elastic = l.dissipated = 0.0;
+    double flow_by_corrections = 0.0;
     for (std::size_t i = 0; i < scene_.bodies.size(); ++i) {
         if (scene_.bodies[i].is_static) continue;
         const BodyState s = engine.body(i);
@@ -45,6 +46,7 @@ void EnergyAccount::after_step(SceneEngine& engine, const std::vector<AppliedLoa
         if (const PlasticJointLaw* law = engine.joint_law(j)) {
             l.elastic += law->elastic_energy(engine.joint_positions(j));
             l.dissipated += law->dissipated();
+            flow_by_corrections += law->dissipated_by_corrections();
         }
     }
     for (const AppliedLoad& a : loads) {
@@ -52,7 +54,9 @@ void EnergyAccount::after_step(SceneEngine& engine, const std::vector<AppliedLoa
         l.external_work += dot(a.force, difference(world_point(s, a.local), a.point)) +
                            dot(a.moment, s.angular_velocity) * scene_.dt;
     }
-    l.corrections = engine.correction_work();
+    // The pushes' work against the loads and gravity, and the dissipation the joints booked on flow
+    // the pushes drove (plastic_joint_law.hpp): neither is the velocity solve's.
+    l.corrections = engine.correction_work() + flow_by_corrections;
     l.handled = std::max({l.handled, std::abs(l.kinetic), std::abs(l.gravitational), std::abs(l.elastic),
                           std::abs(l.dissipated), std::abs(l.external_work)});
 }

@@ -15,7 +15,8 @@ struct EnergyLedger {
     double dissipated = 0.0;     // Σ over the joints [J]
     double external_work = 0.0;  // Σ over the loads of F·Δx + M·Δθ [J]
     double initial = 0.0;        // the kinetic energy at the start [J]
-    double corrections = 0.0;    // of the remainder, what the engine's split-impulse position corrections did [J]
+    double corrections = 0.0;    // of the remainder, what the engine's split-impulse position corrections did: their
+                                 // work against loads and gravity, and the dissipation booked on flow they drove [J]
     double handled = 0.0;        // the largest of the terms' magnitudes so far [J]: the scale of the remainder
     // kinetic + gravitational + elastic + dissipated − external work − initial [J].
     double remainder() const { return kinetic + gravitational + elastic + dissipated - external_work - initial; }

@@ -95,7 +95,7 @@ void BasicBulletPlasticJoint<Constraint>::updateAction(btCollisionWorld*, btScal
     }
     const WorldLoad load{to_vec3(feedback_.m_appliedForceBodyB), to_vec3(feedback_.m_appliedTorqueBodyB)};
     const JointFrameState state = bullet_rows::measure(*constraint_);  // the end of this step is the start of the next
-    switch (driver_.settle(load, state.positions, dt)) {
+    switch (driver_.settle(load, state.positions, dt, bullet_rows::corrected_motion(*constraint_))) {
         case JointEvent::Broke:
             wake();
             constraint_->setEnabled(false);  // broken stays broken: nothing re-enables it

@@ -132,6 +132,15 @@ JointFrameState measure(Constraint& c) {
     return s;
 }
 
+// Per dof, the motion the last solve's split-impulse pushes made along its row: plascap's
+// constraint is pushed by BulletPlasticSolver; the 6-dof springs' rows are not (zeros).
+inline PerDof<double> corrected_motion(const BulletPlasticConstraint& c) { return c.corrected_motion(); }
+
+template <class Constraint>
+PerDof<double> corrected_motion(const Constraint&) {
+    return {};
+}
+
 inline void command(BulletPlasticConstraint& c, std::size_t i, const RowCommand& command) { c.command_row(i, command); }
 
 template <class Constraint>

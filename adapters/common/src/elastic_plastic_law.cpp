@@ -60,16 +60,16 @@ RowCommand ElasticPlasticLaw::plan(double position, double dt, double effective_
     return push;
 }
 
-void ElasticPlasticLaw::settle(double position, double applied_force) {
+void ElasticPlasticLaw::settle(double position, double applied_force, double corrected_motion) {
     if (regime_ == Regime::ElasticPlastic) {
         if (!coupled_) settle_elastic_plastic(position);
     } else {
-        settle_rigid_plastic(position, applied_force);
+        settle_rigid_plastic(position, applied_force, corrected_motion);
     }
     last_force_ = applied_force;
 }
 
-void ElasticPlasticLaw::settle_rigid_plastic(double position, double applied_force) {
+void ElasticPlasticLaw::settle_rigid_plastic(double position, double applied_force, double corrected_motion) {
     // Motion at capacity is plastic flow (flow_criterion.hpp) and the row's work on it, −f·Δx, is
     // absorbed. A flow confirmed late takes up the motion of the steps at the bound before it, and
     // the row's work on that motion.
@@ -81,16 +81,18 @@ void ElasticPlasticLaw::settle_rigid_plastic(double position, double applied_for
                                 : 0.0;  // m·|Δx|/dt² over the bound
     const bool flowed = flow_.flowed(share, stopping);
     if (!flow_.at_bound()) {
-        pending_motion_ = pending_work_ = 0.0;  // the solver's motion: the hold takes it back
+        pending_motion_ = pending_work_ = pending_correction_work_ = 0.0;  // the solver's motion: the hold takes it back
         return;
     }
     pending_motion_ += motion;
     pending_work_ += -applied_force * motion * work_factor_;
+    pending_correction_work_ += -applied_force * corrected_motion * work_factor_;
     if (!flowed) return;
     plastic_offset_ += pending_motion_;
     accumulated_ += std::abs(pending_motion_);
     dissipated_ += pending_work_;
-    pending_motion_ = pending_work_ = 0.0;
+    dissipated_by_corrections_ += pending_correction_work_;
+    pending_motion_ = pending_work_ = pending_correction_work_ = 0.0;
 }
 
 void ElasticPlasticLaw::settle_elastic_plastic(double position) {

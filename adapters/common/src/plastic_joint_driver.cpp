@@ -24,12 +24,13 @@ PerDof<std::optional<RowCommand>> PlasticJointDriver::plan_with_masses(const Joi
     return law_.plan(state.positions, dt, effective_masses);
 }
 
-JointEvent PlasticJointDriver::settle(const WorldLoad& on_b, const PerDof<double>& positions, double dt) {
+JointEvent PlasticJointDriver::settle(const WorldLoad& on_b, const PerDof<double>& positions, double dt,
+                                      const PerDof<double>& corrected_motion) {
     time_ += dt;
     if (law_.broken()) return JointEvent::None;
     forces_ = joint_frame_loads(on_b, planned_centre_of_b_, planned_axes_);
     const double before = law_.plastic_displacement() + law_.plastic_rotation();
-    law_.settle(positions, forces_, time_);
+    law_.settle(positions, forces_, time_, corrected_motion);
     if (sever_) law_.sever(time_);
     if (law_.broken()) {
         if (on_break_)

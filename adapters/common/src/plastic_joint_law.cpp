@@ -105,7 +105,8 @@ PerDof<std::optional<RowCommand>> PlasticJointLaw::plan(const PerDof<double>& me
     return commands;
 }
 
-bool PlasticJointLaw::settle(const PerDof<double>& measured, const PerDof<double>& row_forces, double time) {
+bool PlasticJointLaw::settle(const PerDof<double>& measured, const PerDof<double>& row_forces, double time,
+                             const PerDof<double>& corrected_motion) {
     if (broken()) return false;
     const PerDof<double> positions = continuous(measured);
     PerDof<double> forces = row_forces;
@@ -127,7 +128,7 @@ bool PlasticJointLaw::settle(const PerDof<double>& measured, const PerDof<double
     }
     track(measured, positions);
     for (std::size_t i = 0; i < kDofCount; ++i) {
-        if (laws_[i]) laws_[i]->settle(positions[i], forces[i]);
+        if (laws_[i]) laws_[i]->settle(positions[i], forces[i], corrected_motion[i]);
         last_loads_[i] = -forces[i];
     }
     if (settings_.yield_condition)
@@ -157,6 +158,14 @@ double PlasticJointLaw::dissipated() const {
     double sum = 0.0;
     for (const auto& law : laws_) {
         if (law) sum += law->dissipated();
+    }
+    return sum;
+}
+
+double PlasticJointLaw::dissipated_by_corrections() const {
+    double sum = 0.0;
+    for (const auto& law : laws_) {
+        if (law) sum += law->dissipated_by_corrections();
     }
     return sum;
 }

@@ -15,6 +15,7 @@
 #include <array>
 #include <cstddef>
 
+#include "plascap/adapters/dof.hpp"
 #include "plascap/adapters/joint_frame.hpp"
 #include "plascap/adapters/row_capabilities.hpp"
 #include "plascap/adapters/row_command.hpp"
@@ -52,6 +53,16 @@ public:
     void carry_force(std::size_t k, double force) {
         if (k < written_) rows_[written_dof_[k]].carried = force;
     }
+    // The motion the solver's split-impulse pushes made along the k-th written row in the last solve
+    // [m | rad] (0 without them), and per dof: what the law books apart (plastic_joint_law.hpp).
+    void carry_push(std::size_t k, double motion) {
+        if (k < written_) rows_[written_dof_[k]].pushed = motion;
+    }
+    PerDof<double> corrected_motion() const {
+        PerDof<double> motion{};
+        for (std::size_t i = 0; i < rows_.size(); ++i) motion[i] = rows_[i].pushed;
+        return motion;
+    }
 
     void getInfo1(btConstraintInfo1* info) override;
     void getInfo2(btConstraintInfo2* info) override;
@@ -69,6 +80,7 @@ private:
         double lower = 0.0, upper = 0.0;  // Hold and Push: force range on b [N | N·m]
         double correction = 0.0;          // the position-correction rate last written
         double carried = 0.0;             // the force it carried in the last solved step
+        double pushed = 0.0;              // the motion the last solve's pushes made along it
     };
 
     btTransform frame_in_a_, frame_in_b_;

@@ -48,7 +48,11 @@ public:
     RowCommand plan(double position, double dt, double effective_mass, std::optional<double> hold_bound = {});
 
     // After the step: the new position and the force the row applied (generalised, on b).
-    void settle(double position, double applied_force);
+    // `corrected_motion`: the part of the step's motion that position corrections made outside the
+    // velocity solve (Bullet's split-impulse pushes; 0 on engines without them). A rigid-plastic row
+    // that flows books its work on that motion too, and reports it apart
+    // (dissipated_by_corrections): an energy ledger counts it with the corrections that drove it.
+    void settle(double position, double applied_force, double corrected_motion = 0.0);
 
     // Part of a joint with a coupled yield condition (plastic_joint_law.hpp): the spring force is not
     // capped at this dof's own capacities and settle() leaves its return mapping to the joint,
@@ -68,6 +72,8 @@ public:
     double plastic_offset() const { return plastic_offset_; }
     double accumulated_plastic() const { return accumulated_; }  // Σ|Δx_p| [m | rad]
     double dissipated() const { return dissipated_; }            // [J]
+    // The part of dissipated() booked on motion that position corrections made [J].
+    double dissipated_by_corrections() const { return dissipated_by_corrections_; }
     // A rigid-plastic row at its bound in the last step.
     bool at_capacity() const { return regime_ != Regime::ElasticPlastic && flow_.at_bound(); }
     // A rigid-plastic row carried at least half its bound in the last step.
@@ -83,7 +89,7 @@ private:
         if (last_force_ > 0.0) return law_.capacity_negative;
         return law_.capacity_positive < law_.capacity_negative ? law_.capacity_positive : law_.capacity_negative;
     }
-    void settle_rigid_plastic(double position, double applied_force);
+    void settle_rigid_plastic(double position, double applied_force, double corrected_motion);
     void settle_elastic_plastic(double position);
 
     DofLaw law_;
@@ -97,6 +103,8 @@ private:
     FlowCriterion flow_;  // rigid-plastic: is motion at the bound flow?
     // The motion and the row's work in the steps at its bound not yet confirmed as flow [m | rad, J].
     double pending_motion_ = 0.0, pending_work_ = 0.0;
+    double pending_correction_work_ = 0.0;  // the part of pending_work_ on corrected motion [J]
+    double dissipated_by_corrections_ = 0.0;
     double last_lower_ = 0.0, last_upper_ = 0.0;  // the Hold row's force range last planned
     bool two_sided_bounds_ = false;
     bool coupled_ = false;

@@ -60,8 +60,11 @@ public:
     }
 
     // After the step: what the rows applied to b (world frame, torque about b's centre of mass as it
-    // was planned) and the dof positions now. A broken joint reports None ever after.
-    JointEvent settle(const WorldLoad& on_b, const PerDof<double>& positions, double dt);
+    // was planned) and the dof positions now; `corrected_motion`, per dof, the part of the step's
+    // motion position corrections made outside the velocity solve (plastic_joint_law.hpp). A broken
+    // joint reports None ever after.
+    JointEvent settle(const WorldLoad& on_b, const PerDof<double>& positions, double dt,
+                      const PerDof<double>& corrected_motion = {});
 
     // The joint breaks at the end of the next step whatever its load (a member removed): settle()
     // then reports Broke, and the adapter drops its rows as for any break.

@@ -29,7 +29,10 @@ public:
     // After a step that ended at `time`: the new positions and the generalised forces the rows
     // applied to body b. Returns true when the joint broke in this step. A broken joint ignores
     // further calls: broken stays broken.
-    bool settle(const PerDof<double>& positions, const PerDof<double>& forces, double time);
+    // `corrected_motion`: per dof, the part of the step's motion that position corrections made
+    // outside the velocity solve (elastic_plastic_law.hpp; zeros on engines without them).
+    bool settle(const PerDof<double>& positions, const PerDof<double>& forces, double time,
+                const PerDof<double>& corrected_motion = {});
 
     // Breaks the joint at `time` whatever its deformation (a member removed, a charge fired); no-op
     // if broken already.
@@ -50,6 +53,9 @@ public:
     double plastic_displacement() const { return summary_.plastic_displacement; }  // Σ over translations of Σ|Δx_p| [m]
     double plastic_rotation() const { return summary_.plastic_rotation; }          // Σ over rotations [rad]
     double dissipated() const;            // [J]
+    // The part of dissipated() that flow driven by position corrections booked [J]: an energy
+    // ledger counts it with the corrections (Bullet's split impulses), not the velocity solve.
+    double dissipated_by_corrections() const;
     double elastic_energy(const PerDof<double>& positions) const;  // [J]
     // How close the last step's loads came to what the joint carries: U of the coupled condition, or
     // without one the largest |load|/capacity of its side over the plastic dofs (the paper's
