@@ -95,6 +95,8 @@ void BulletPlasticSolver::solveGroupCacheFriendlySplitImpulseIterations(
     btTypedConstraint** constraints, int constraint_count, const btContactSolverInfo& info, btIDebugDraw* drawer) {
     btSequentialImpulseConstraintSolver::solveGroupCacheFriendlySplitImpulseIterations(
         bodies, body_count, manifolds, manifold_count, constraints, constraint_count, info, drawer);
+    // Bullet pushes only contacts here; with none, and no correction of ours, no body moves.
+    pushed_ = info.m_splitImpulse && (manifold_count > 0 || largest_correction_ >= kPushConverged);
     if (!info.m_splitImpulse || largest_correction_ < kPushConverged) return;  // nothing to correct
     // push_iterations(info), or fewer once converged (a structure at rest needs none: its
     // corrections are nil).
@@ -112,16 +114,22 @@ void BulletPlasticSolver::solveGroupCacheFriendlySplitImpulseIterations(
 btScalar BulletPlasticSolver::solveGroupCacheFriendlyFinish(btCollisionObject** bodies, int count,
                                                              const btContactSolverInfo& info) {
     const btScalar per_second = 1.0 / info.m_timeStep;  // impulse over the step → force
-    const btScalar turn_erp = info.m_splitImpulse ? info.m_splitImpulseTurnErp : 0.0;
+    const bool pushed = pushed_ && info.m_splitImpulse;
+    pushed_ = false;
     for_each_row([&](BulletPlasticConstraint& c, std::size_t k, btSolverConstraint& row) {
         c.carry_force(k, row.m_appliedImpulse * per_second);
+        if (!pushed) {
+            c.carry_push(k, 0.0);  // no push ran: no body moved but by its velocity
+            return;
+        }
         // The pushes move each body by v_push·h and turn it by ω_turn·turnErp·h (as Bullet
         // integrates them): the row's Jacobian on that is the motion they made along it.
         const btSolverBody& a = m_tmpSolverBodyPool[row.m_solverBodyIdA];
         const btSolverBody& b = m_tmpSolverBodyPool[row.m_solverBodyIdB];
         const btScalar rate = row.m_contactNormal1.dot(a.m_pushVelocity) + row.m_contactNormal2.dot(b.m_pushVelocity) +
-                              (row.m_relpos1CrossNormal.dot(a.m_turnVelocity) + row.m_relpos2CrossNormal.dot(b.m_turnVelocity)) * turn_erp;
-        c.carry_push(k, info.m_splitImpulse ? rate * info.m_timeStep : 0.0);
+                              (row.m_relpos1CrossNormal.dot(a.m_turnVelocity) + row.m_relpos2CrossNormal.dot(b.m_turnVelocity)) *
+                                  info.m_splitImpulseTurnErp;
+        c.carry_push(k, rate * info.m_timeStep);
     });
     if (info.m_splitImpulse) {
         // A push moves a body by δ = v_push·h (and turns it by ω_turn·turnErp·h, as Bullet integrates

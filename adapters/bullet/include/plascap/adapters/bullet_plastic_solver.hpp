@@ -62,6 +62,7 @@ private:
     // in one step; what is left is corrected in the next).
     static int push_iterations(const btContactSolverInfo& info) { return std::max(1, info.m_numIterations / 2); }
     double largest_correction_ = 0.0;                // of the pushed rows' rates [m/s | rad/s]
+    bool pushed_ = false;  // this solve ran pushes (plascap's rows' or contacts'): bodies may have moved
     double correction_work_ = 0.0;
 };
 
