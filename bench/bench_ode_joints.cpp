@@ -1,6 +1,7 @@
 // The ODE adapter's cost (issue 16): one dWorldQuickStep with n plastic joints against the same
 // scene with n dJointTypeFixed, timed interleaved with it (counter vs_rigid; goal ≤ 1.3 for hinges and
-// for all six dofs plastic), and the cost per joint from 100 to 10,000 joints (ns_per_joint).
+// for all six dofs plastic), and the cost per joint from 100 to 10,000 joints (ns_per_joint). PlasticAxis:
+// one plastic rotation, the adapter's ODE hinge joint.
 // Run: build/bench/bench_ode_joints (docs/adapters.md, "Cost").
 #include <benchmark/benchmark.h>
 
@@ -92,6 +93,24 @@ void PlasticJoints(benchmark::State& state) {
 BENCHMARK(PlasticJoints)
     ->ArgNames({"elastic", "six", "joints"})
     ->ArgsProduct({{0, 1}, {0, 1}, {100, 1000, 10000}})
+    ->Unit(benchmark::kMicrosecond);
+
+// A one-axis plastic hinge: Mz plastic, the other five dofs rigid, which the adapter makes one ODE
+// hinge joint whose motor row is the dof's (six rows in one joint, as a fixed joint); elastic = 1
+// gives Mz a stiffness of 100 N·m/rad. The hanging box's weight puts no moment on it.
+void PlasticAxis(benchmark::State& state) {
+    plascap::PlasticJointSettings settings;
+    for (plascap::Dof dof : plascap::kAllDofs) {
+        const bool plastic = dof == plascap::Dof::Mz;
+        settings.modes[plascap::index(dof)] = plastic ? plascap::DofMode::Plastic : plascap::DofMode::Rigid;
+        settings.laws[plascap::index(dof)] = plascap::DofLaw{1e5, 1e5, std::nullopt};
+        if (plastic && state.range(0) == 1) settings.laws[plascap::index(dof)].stiffness = 100.0;
+    }
+    step_with_joints(state, static_cast<int>(state.range(1)), settings);
+}
+BENCHMARK(PlasticAxis)
+    ->ArgNames({"elastic", "joints"})
+    ->ArgsProduct({{0, 1}, {100, 1000, 10000}})
     ->Unit(benchmark::kMicrosecond);
 
 // Box against coupled yield: the cases of joint_yield_settings.hpp.

@@ -68,6 +68,19 @@ RowSetting row_setting(DofMode mode, const std::optional<RowCommand>& command, d
     return {command->force > 0.0 ? kPushSpeed : -kPushSpeed, std::abs(command->force)};
 }
 
+// The one rotation a hinge joint may carry: all three translations rigid, exactly one rotation not
+// rigid (plastic, elastic or free), the other two rigid. ODE's hinge joint is then the whole joint,
+// six rows in one joint as ODE's fixed joint has, where a ball joint and an AMotor are two.
+std::optional<std::size_t> hinge_dof(const PlasticJointLaw& law) {
+    std::optional<std::size_t> turning;
+    for (std::size_t i = 0; i < kAllDofs.size(); ++i) {
+        if (law.mode(kAllDofs[i]) == DofMode::Rigid) continue;
+        if (!is_rotation(kAllDofs[i]) || turning) return std::nullopt;
+        turning = i;
+    }
+    return turning;
+}
+
 void add(WorldLoad& load, const dJointFeedback& fb) {
     for (int i = 0; i < 3; ++i) {
         load.force[i] += fb.f1[i];
@@ -82,8 +95,17 @@ OdePlasticJoint::OdePlasticJoint(dWorldID world, dBodyID a, dBodyID b, const Pos
     : world_(world), a_(a), b_(b), driver_(settings, kOdeRows) {
     frame_on_a_ = a ? relative(pose_of(a), frame_in_world) : frame_in_world;
     frame_on_b_ = relative(pose_of(b), frame_in_world);
-    bool any_rotation_row = false;
+    translations_ = dJointGroupCreate(0);
     const PlasticJointLaw& law = driver_.law();
+    hinge_dof_ = hinge_dof(law);
+    if (hinge_dof_) {
+        hinge_ = dJointCreateHinge(world_, nullptr);
+        dJointAttach(hinge_, b_, a_);  // body 1 = b: the motor row's velocity is +(the dof's rate)
+        dJointSetFeedback(hinge_, &rotation_feedback_);
+        hold_hinge_where_it_is();
+        return;
+    }
+    bool any_rotation_row = false;
     for (Dof dof : kAllDofs) {
         if (is_rotation(dof) && law.mode(dof) != DofMode::Free) any_rotation_row = true;
     }
@@ -94,7 +116,6 @@ OdePlasticJoint::OdePlasticJoint(dWorldID world, dBodyID a, dBodyID b, const Pos
         dJointSetAMotorNumAxes(rotations_, 3);
         dJointSetFeedback(rotations_, &rotation_feedback_);
     }
-    translations_ = dJointGroupCreate(0);
     if (law.mode(Dof::Qx) == DofMode::Rigid && law.mode(Dof::N) == DofMode::Rigid && law.mode(Dof::Qz) == DofMode::Rigid) {
         ball_ = dJointCreateBall(world_, nullptr);
         dJointAttach(ball_, b_, a_);
@@ -104,6 +125,7 @@ OdePlasticJoint::OdePlasticJoint(dWorldID world, dBodyID a, dBodyID b, const Pos
 }
 
 OdePlasticJoint::~OdePlasticJoint() {
+    if (hinge_) dJointDestroy(hinge_);
     if (rotations_) dJointDestroy(rotations_);
     if (ball_) dJointDestroy(ball_);
     dJointGroupDestroy(translations_);
@@ -114,7 +136,17 @@ void OdePlasticJoint::engage(double now) {
         const JointFrameState state = measure();
         dJointSetBallAnchor(ball_, state.axes.anchor[0], state.axes.anchor[1], state.axes.anchor[2]);
     }
+    if (hinge_) hold_hinge_where_it_is();
     driver_.engage(measure().positions, now);
+}
+
+void OdePlasticJoint::hold_hinge_where_it_is() {
+    // ODE keeps the axis in each body's coordinates as it is in the world now: the hinge holds the
+    // anchor and the two other rotations as they are, and its motor row turns about the axis.
+    const JointFrameState state = measure();
+    const Vec3& axis = state.axes.rotation[*hinge_dof_ - 3];
+    dJointSetHingeAnchor(hinge_, state.axes.anchor[0], state.axes.anchor[1], state.axes.anchor[2]);
+    dJointSetHingeAxis(hinge_, axis[0], axis[1], axis[2]);
 }
 
 JointFrameState OdePlasticJoint::measure() const {
@@ -137,6 +169,10 @@ void OdePlasticJoint::before_step(double dt) {
 
 void OdePlasticJoint::set_rotation_rows(const JointFrameState& state, const PerDof<std::optional<RowCommand>>& commands,
                                         double dt) {
+    if (hinge_) {
+        set_hinge_motor(state, commands, dt);
+        return;
+    }
     if (!rotations_) return;
     static constexpr int kVel[3] = {dParamVel1, dParamVel2, dParamVel3};
     static constexpr int kFMax[3] = {dParamFMax1, dParamFMax2, dParamFMax3};
@@ -156,9 +192,22 @@ void OdePlasticJoint::set_rotation_rows(const JointFrameState& state, const PerD
     }
 }
 
+void OdePlasticJoint::set_hinge_motor(const JointFrameState& state, const PerDof<std::optional<RowCommand>>& commands,
+                                      double dt) {
+    // The motor row turns about the hinge axis, which, while the hinge holds the other two
+    // rotations, is the direction of the dof's gradient: its rate and bound scale by |g| as the
+    // AMotor's do (set_rotation_rows).
+    const std::size_t dof = *hinge_dof_;
+    const double length = norm(state.axes.rotation[dof - 3]);
+    const RowSetting row = row_setting(driver_.law().mode(kAllDofs[dof]), commands[dof], state.positions[dof],
+                                       driver_.engaged_positions()[dof], dt);
+    dJointSetHingeParam(hinge_, dParamVel, row.velocity / length);
+    dJointSetHingeParam(hinge_, dParamFMax, row.bound * length);
+}
+
 void OdePlasticJoint::set_translation_rows(const JointFrameState& state,
                                            const PerDof<std::optional<RowCommand>>& commands, double dt) {
-    if (ball_) return;  // the ball holds all three
+    if (ball_ || hinge_) return;  // they hold all three
     dJointGroupEmpty(translations_);
     translation_joints_ = 0;
     std::array<RowSetting, 3> rows;
@@ -195,6 +244,7 @@ void OdePlasticJoint::set_translation_rows(const JointFrameState& state,
 }
 
 void OdePlasticJoint::disable_rows() {
+    if (hinge_) dJointDisable(hinge_);
     if (rotations_) dJointDisable(rotations_);
     if (ball_) dJointDisable(ball_);
     dJointGroupEmpty(translations_);
@@ -209,7 +259,7 @@ void OdePlasticJoint::wake() {
 JointEvent OdePlasticJoint::after_step(double dt) {
     if (driver_.broken()) return driver_.settle({}, {}, dt);  // None; keeps the clock
     WorldLoad load;
-    if (rotations_) add(load, rotation_feedback_);
+    if (rotations_ || hinge_) add(load, rotation_feedback_);
     if (ball_) add(load, ball_feedback_);
     for (int i = 0; i < translation_joints_; ++i) add(load, translation_feedback_[i]);
     measured_ = measure();

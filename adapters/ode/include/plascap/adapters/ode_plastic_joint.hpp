@@ -10,6 +10,9 @@
 //     the anchor each step (their bounds are forces, their target velocities set; the contact's own
 //     normal row is made inert with a large CFM). A row at the anchor is what a joint is. When all
 //     three translations are rigid, one ball-and-socket joint at the anchor does it more cheaply.
+//   a plastic hinge (one rotation not rigid, the other five dofs rigid): one ODE hinge joint about
+//     that rotation's axis, whose motor row is the dof's row: six rows in one joint, as ODE's own
+//     fixed joint, instead of a ball joint and an AMotor.
 // Rigid dofs are rows with unbounded force and a Baumgarte target (ERP kHoldCorrection); free dofs
 // get no row. Feedback (dJointFeedback, world frame, torque about b's centre) of all of them is
 // summed and handed to the engine-neutral PlasticJointDriver, which settles the law and plans the
@@ -62,12 +65,16 @@ private:
     void wake();
     void set_rotation_rows(const JointFrameState& state, const PerDof<std::optional<RowCommand>>& commands, double dt);
     void set_translation_rows(const JointFrameState& state, const PerDof<std::optional<RowCommand>>& commands, double dt);
+    void set_hinge_motor(const JointFrameState& state, const PerDof<std::optional<RowCommand>>& commands, double dt);
+    void hold_hinge_where_it_is();
     void disable_rows();
 
     dWorldID world_;
     dBodyID a_, b_;
     Pose frame_on_a_, frame_on_b_;  // in a's and b's body coordinates (a = world: world coordinates)
     dJointID rotations_ = nullptr;
+    dJointID hinge_ = nullptr;               // one rotation turns, the other five dofs rigid: the whole joint
+    std::optional<std::size_t> hinge_dof_;  // that rotation's dof
     dJointID ball_ = nullptr;  // all translations rigid
     dJointFeedback ball_feedback_{};
     dJointGroupID translations_ = nullptr;
