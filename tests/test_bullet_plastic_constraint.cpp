@@ -98,5 +98,30 @@ TEST(BulletPlasticConstraint, TwistThroughSeveralTurnsDissipatesTheKineticEnergy
     EXPECT_LT(block.box.body().getAngularVelocity().length(), 1e-6);
 }
 
+TEST(BulletPlasticConstraint, TheSolverHandsEachRowTheEffectiveMassOfItsClosedForm) {
+    // The block hangs at rest from its top (lever r = anchor − centre = 0.5 m along y). Per row,
+    // 1/(J·M⁻¹·Jᵀ): along y (r ∥ y) the block's mass; along x and z m⁻¹ + (r × e)·I⁻¹·(r × e) =
+    // 1/m + r²/I_zz (resp. I_xx); about an axis its moment of inertia (box: I = m(a² + b²)/12).
+    Block block;
+    PlasticJointSettings s;
+    for (Dof dof : kAllDofs) {
+        s.modes[index(dof)] = DofMode::Plastic;
+        s.laws[index(dof)] = {1e6, 1e6, 1.0};  // soft springs: every dof elastic-plastic (ω·dt ≪ 0.25)
+    }
+    BulletPlasticJoint joint(nullptr, block.box.body(), block.anchor(), s);
+    joint.attach(block.world.world(), kDt);
+    const PerDof<double> before = joint.constraint().solved_masses();
+    for (double m : before) EXPECT_TRUE(std::isnan(m));  // no solve yet: the joint computes them
+    block.world.step(kDt);
+    const double bending = kMass * (0.2 * 0.2 + 1.0 * 1.0) / 12, twisting = kMass * (0.2 * 0.2 + 0.2 * 0.2) / 12;
+    const double shear = 1.0 / (1.0 / kMass + 0.5 * 0.5 / bending);
+    const PerDof<double> expected = {shear, kMass, shear, bending, twisting, bending};
+    const PerDof<double> solved = joint.constraint().solved_masses();
+    for (std::size_t i = 0; i < kDofCount; ++i) EXPECT_NEAR(solved[i], expected[i], 1e-12 * expected[i]) << i;
+    // The law plans the next step with them: its ω·dt is √(k/m)·dt (eq. 3.2) with k = 1.
+    for (std::size_t i = 0; i < kDofCount; ++i)
+        EXPECT_NEAR(joint.law().law(kAllDofs[i])->omega_dt(), std::sqrt(1.0 / expected[i]) * kDt, 1e-12) << i;
+}
+
 }  // namespace
 }  // namespace plascap

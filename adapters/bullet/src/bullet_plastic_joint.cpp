@@ -81,7 +81,7 @@ void BasicBulletPlasticJoint<Constraint>::plan(double dt, const JointFrameState&
     const PerDof<std::optional<RowCommand>> commands =
         driver_.plan(state, to_vec3(b_.getCenterOfMassPosition()), dt, [&] {
             return std::pair{inertia_of(b_), a_ ? std::optional<BodyInertia>(inertia_of(*a_)) : std::nullopt};
-        });
+        }, bullet_rows::solved_masses(*constraint_));
     for (std::size_t i = 0; i < kDofCount; ++i) {
         if (commands[i]) bullet_rows::command(*constraint_, i, *commands[i]);
     }

@@ -73,6 +73,9 @@ void BulletPlasticSolver::convertJoints(btTypedConstraint** constraints, int cou
     largest_correction_ = 0.0;
     // A Push row's bounds are its force: its first iteration applies it, and it needs no more.
     for_each_row([&](BulletPlasticConstraint& c, std::size_t k, btSolverConstraint& row) {
+        // Bullet's jacDiagABInv is the row's effective mass 1/(J·M⁻¹·Jᵀ) (0 when J·M⁻¹·Jᵀ is below
+        // its epsilon: not known then).
+        c.note_row_mass(k, row.m_jacDiagABInv > 0.0 ? row.m_jacDiagABInv : NAN);
         if (!c.holds_position(k)) return;
         if (split) {
             const double rate = c.correction_rate(k);

@@ -141,6 +141,17 @@ PerDof<double> corrected_motion(const Constraint&) {
     return {};
 }
 
+// Per dof, the rows' effective masses as the last solve formed them (NaN: not known): plascap's
+// constraint is told them by BulletPlasticSolver; the 6-dof springs' are not known.
+inline PerDof<double> solved_masses(const BulletPlasticConstraint& c) { return c.solved_masses(); }
+
+template <class Constraint>
+PerDof<double> solved_masses(const Constraint&) {
+    PerDof<double> unknown;
+    unknown.fill(NAN);
+    return unknown;
+}
+
 inline void command(BulletPlasticConstraint& c, std::size_t i, const RowCommand& command) { c.command_row(i, command); }
 
 template <class Constraint>

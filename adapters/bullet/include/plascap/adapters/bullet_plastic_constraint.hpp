@@ -13,6 +13,7 @@
 #include <btBulletDynamicsCommon.h>
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 
 #include "plascap/adapters/dof.hpp"
@@ -58,6 +59,18 @@ public:
     void carry_push(std::size_t k, double motion) {
         if (k < written_) rows_[written_dof_[k]].pushed = motion;
     }
+    // The effective mass 1/(J·M⁻¹·Jᵀ) of the k-th written row as the solver formed it in the last
+    // solve (BulletPlasticSolver: Bullet's jacDiagABInv; NaN where Bullet left it 0), and per
+    // dof (NaN for a dof whose row has not been solved yet): the law's eq. 3.2 masses at the start
+    // of the last step, which saves the joint computing them again (row_effective_mass.hpp).
+    void note_row_mass(std::size_t k, double mass) {
+        if (k < written_) rows_[written_dof_[k]].solved_mass = mass;
+    }
+    PerDof<double> solved_masses() const {
+        PerDof<double> masses;
+        for (std::size_t i = 0; i < rows_.size(); ++i) masses[i] = rows_[i].solved_mass;
+        return masses;
+    }
     PerDof<double> corrected_motion() const {
         PerDof<double> motion{};
         for (std::size_t i = 0; i < rows_.size(); ++i) motion[i] = rows_[i].pushed;
@@ -81,6 +94,7 @@ private:
         double correction = 0.0;          // the position-correction rate last written
         double carried = 0.0;             // the force it carried in the last solved step
         double pushed = 0.0;              // the motion the last solve's pushes made along it
+        double solved_mass = NAN;         // its effective mass in the last solve [kg | kg·m²]
     };
 
     btTransform frame_in_a_, frame_in_b_;

@@ -4,6 +4,7 @@
 // what the step did (yielded, broke) — once, to whoever listens. An engine adapter only measures the
 // joint, sets its rows and acts on the report (wake the bodies, disable the rows); everything else
 // lives here, so Bullet and ODE cannot drift apart.
+#include <cmath>
 #include <functional>
 #include <optional>
 #include <utility>
@@ -47,11 +48,16 @@ public:
     // centre of mass then (the feedback's torque is about it). `inertias()` → {b, a (nullopt: the
     // world)} is called only when the rows' effective masses are needed: for a spring (eq. 3.2), or
     // for a rigid-plastic row that may reach its bound (flow_criterion.hpp); a joint far below its
-    // capacities keeps the masses it last had.
+    // capacities keeps the masses it last had. `solved_masses`: the rows' effective masses as the
+    // engine's solver formed them for the last step, per dof (NaN: not known); used instead of
+    // computing them when every plastic dof's is known.
     template <class Inertias>
     PerDof<std::optional<RowCommand>> plan(const JointFrameState& state, const Vec3& centre_of_b, double dt,
-                                           Inertias&& inertias) {
-        if (springs_ || !masses_known_ || law_.near_capacity()) {
+                                           Inertias&& inertias, const PerDof<double>& solved_masses = kUnknownMasses) {
+        if (knows_every_plastic_mass(solved_masses)) {
+            masses_ = solved_masses;
+            masses_known_ = true;
+        } else if (springs_ || !masses_known_ || law_.near_capacity()) {
             const std::pair<BodyInertia, std::optional<BodyInertia>> bodies = inertias();
             masses_ = row_effective_masses(state.axes, bodies.first, bodies.second);
             masses_known_ = true;
@@ -80,6 +86,13 @@ public:
     double time() const { return time_; }
 
 private:
+    static constexpr PerDof<double> kUnknownMasses = {NAN, NAN, NAN, NAN, NAN, NAN};
+    bool knows_every_plastic_mass(const PerDof<double>& masses) const {
+        for (std::size_t i = 0; i < kDofCount; ++i) {
+            if (law_.mode(kAllDofs[i]) == DofMode::Plastic && std::isnan(masses[i])) return false;
+        }
+        return true;
+    }
     PerDof<std::optional<RowCommand>> plan_with_masses(const JointFrameState& state, const Vec3& centre_of_b, double dt,
                                                        const PerDof<double>& effective_masses);
 
