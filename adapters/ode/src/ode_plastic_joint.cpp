@@ -68,6 +68,18 @@ RowSetting row_setting(DofMode mode, const std::optional<RowCommand>& command, d
     return {command->force > 0.0 ? kPushSpeed : -kPushSpeed, std::abs(command->force)};
 }
 
+// A rotation row along the unit direction n = g/|g| of its angle's gradient g (ODE normalises an
+// AMotor's axes, and a hinge's axis is that direction while it holds the other two rotations)
+// measures n·ω = θ̇/|g| and applies, with a moment λ·n, the generalised force λ/|g|
+// (swing_twist.hpp): its target rate is the angle's over |g|, its bound the dof's times |g|.
+RowSetting rotation_row_setting(const PlasticJointDriver& driver, const JointFrameState& state,
+                                const std::optional<RowCommand>& command, std::size_t dof, double dt) {
+    const double length = norm(state.axes.rotation[dof - 3]);
+    const RowSetting row = row_setting(driver.law().mode(kAllDofs[dof]), command, state.positions[dof],
+                                       driver.engaged_positions()[dof], dt);
+    return {row.velocity / length, row.bound * length};
+}
+
 // The one rotation a hinge joint may carry: all three translations rigid, exactly one rotation not
 // rigid (plastic, elastic or free), the other two rigid. ODE's hinge joint is then the whole joint,
 // six rows in one joint as ODE's fixed joint has, where a ball joint and an AMotor are two.
@@ -102,7 +114,7 @@ OdePlasticJoint::OdePlasticJoint(dWorldID world, dBodyID a, dBodyID b, const Pos
         hinge_ = dJointCreateHinge(world_, nullptr);
         dJointAttach(hinge_, b_, a_);  // body 1 = b: the motor row's velocity is +(the dof's rate)
         dJointSetFeedback(hinge_, &rotation_feedback_);
-        hold_hinge_where_it_is();
+        hold_hinge_where_it_is(measure());
         return;
     }
     bool any_rotation_row = false;
@@ -132,18 +144,16 @@ OdePlasticJoint::~OdePlasticJoint() {
 }
 
 void OdePlasticJoint::engage(double now) {
-    if (ball_) {  // hold the anchor where it is now
-        const JointFrameState state = measure();
-        dJointSetBallAnchor(ball_, state.axes.anchor[0], state.axes.anchor[1], state.axes.anchor[2]);
-    }
-    if (hinge_) hold_hinge_where_it_is();
-    driver_.engage(measure().positions, now);
+    const JointFrameState state = measure();
+    // Hold the anchor (and a hinge the other two rotations) where it is now.
+    if (ball_) dJointSetBallAnchor(ball_, state.axes.anchor[0], state.axes.anchor[1], state.axes.anchor[2]);
+    if (hinge_) hold_hinge_where_it_is(state);
+    driver_.engage(state.positions, now);
 }
 
-void OdePlasticJoint::hold_hinge_where_it_is() {
+void OdePlasticJoint::hold_hinge_where_it_is(const JointFrameState& state) {
     // ODE keeps the axis in each body's coordinates as it is in the world now: the hinge holds the
     // anchor and the two other rotations as they are, and its motor row turns about the axis.
-    const JointFrameState state = measure();
     const Vec3& axis = state.axes.rotation[*hinge_dof_ - 3];
     dJointSetHingeAnchor(hinge_, state.axes.anchor[0], state.axes.anchor[1], state.axes.anchor[2]);
     dJointSetHingeAxis(hinge_, axis[0], axis[1], axis[2]);
@@ -177,32 +187,20 @@ void OdePlasticJoint::set_rotation_rows(const JointFrameState& state, const PerD
     static constexpr int kVel[3] = {dParamVel1, dParamVel2, dParamVel3};
     static constexpr int kFMax[3] = {dParamFMax1, dParamFMax2, dParamFMax3};
     for (int i = 0; i < 3; ++i) {
-        // ODE normalises an AMotor axis, and a row along the unit direction n = g/|g| of an angle's
-        // gradient g measures n·ω = θ̇/|g| and applies, with a moment λ·n, the generalised force
-        // λ/|g| (swing_twist.hpp): its target rate is the angle's over |g|, its bound the dof's times |g|.
         const Vec3& gradient = state.axes.rotation[i];
-        const double length = norm(gradient);
         dJointSetAMotorAxis(rotations_, i, 0, gradient[0], gradient[1], gradient[2]);  // rel 0: world axes
         const std::size_t dof = 3 + static_cast<std::size_t>(i);
-        const RowSetting row =
-            row_setting(driver_.law().mode(kAllDofs[dof]), commands[dof], state.positions[dof],
-                        driver_.engaged_positions()[dof], dt);
-        dJointSetAMotorParam(rotations_, kVel[i], row.velocity / length);
-        dJointSetAMotorParam(rotations_, kFMax[i], row.bound * length);
+        const RowSetting row = rotation_row_setting(driver_, state, commands[dof], dof, dt);
+        dJointSetAMotorParam(rotations_, kVel[i], row.velocity);
+        dJointSetAMotorParam(rotations_, kFMax[i], row.bound);
     }
 }
 
 void OdePlasticJoint::set_hinge_motor(const JointFrameState& state, const PerDof<std::optional<RowCommand>>& commands,
                                       double dt) {
-    // The motor row turns about the hinge axis, which, while the hinge holds the other two
-    // rotations, is the direction of the dof's gradient: its rate and bound scale by |g| as the
-    // AMotor's do (set_rotation_rows).
-    const std::size_t dof = *hinge_dof_;
-    const double length = norm(state.axes.rotation[dof - 3]);
-    const RowSetting row = row_setting(driver_.law().mode(kAllDofs[dof]), commands[dof], state.positions[dof],
-                                       driver_.engaged_positions()[dof], dt);
-    dJointSetHingeParam(hinge_, dParamVel, row.velocity / length);
-    dJointSetHingeParam(hinge_, dParamFMax, row.bound * length);
+    const RowSetting row = rotation_row_setting(driver_, state, commands[*hinge_dof_], *hinge_dof_, dt);
+    dJointSetHingeParam(hinge_, dParamVel, row.velocity);
+    dJointSetHingeParam(hinge_, dParamFMax, row.bound);
 }
 
 void OdePlasticJoint::set_translation_rows(const JointFrameState& state,

@@ -66,7 +66,7 @@ private:
     void set_rotation_rows(const JointFrameState& state, const PerDof<std::optional<RowCommand>>& commands, double dt);
     void set_translation_rows(const JointFrameState& state, const PerDof<std::optional<RowCommand>>& commands, double dt);
     void set_hinge_motor(const JointFrameState& state, const PerDof<std::optional<RowCommand>>& commands, double dt);
-    void hold_hinge_where_it_is();
+    void hold_hinge_where_it_is(const JointFrameState& state);
     void disable_rows();
 
     dWorldID world_;
