@@ -2,6 +2,7 @@
 // problem and where it is.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -165,4 +166,28 @@ TEST(Validation, JointPointMustBeFinite) {
     Section s = rectangle_section(0.1, 0.1, 1e8);
     s.reference = Point{kNaN, 0.0};
     EXPECT_REFUSED(s, "reference: the joint point (nan, 0) must be finite and within ±1e6 m");
+}
+
+// The bending axes search each part's level range from these boxes (plastic_bending.cpp): each must
+// be exactly the outer ring's extent in local coordinates, also for a section far from the origin.
+TEST(Validation, KeepsEachPartsBoxInLocalCoordinates) {
+    const Ring triangle{{1e4 + 0.3, 2e4}, {1e4 + 0.5, 2e4 + 0.05}, {1e4 + 0.3, 2e4 + 0.2}};
+    const ValidSection valid = validate_section(section_of({part(box(1e4, 2e4, 1e4 + 0.3, 2e4 + 0.1), 1e8), part(triangle, 1e8)}));
+    ASSERT_EQ(valid.part_extents().size(), 2u);
+    for (std::size_t p = 0; p < 2; ++p) {
+        const Ring& ring = valid.parts()[p].outer;
+        const RingExtent& e = valid.part_extents()[p];
+        double min_x = ring[0].x, max_x = ring[0].x, min_z = ring[0].z, max_z = ring[0].z;
+        for (Point q : ring) {
+            min_x = std::min(min_x, q.x), max_x = std::max(max_x, q.x);
+            min_z = std::min(min_z, q.z), max_z = std::max(max_z, q.z);
+        }
+        EXPECT_EQ(e.min_x, min_x) << "part " << p;
+        EXPECT_EQ(e.max_x, max_x) << "part " << p;
+        EXPECT_EQ(e.min_z, min_z) << "part " << p;
+        EXPECT_EQ(e.max_z, max_z) << "part " << p;
+    }
+    // Local coordinates are centred on the whole section's box: x from 1e4 to 1e4 + 0.5.
+    EXPECT_NEAR(valid.part_extents()[1].max_x, 0.25, 1e-9);
+    EXPECT_NEAR(valid.part_extents()[0].min_z, -0.1, 1e-9);
 }

@@ -48,6 +48,15 @@ inline std::size_t next_index(std::size_t i, std::size_t n) { return i + 1 == n 
 
 }  // namespace
 
+RingExtent ring_extent(const Ring& ring) {
+    RingExtent e{ring[0].x, ring[0].x, ring[0].z, ring[0].z};
+    for (Point p : ring) {
+        e.min_x = std::min(e.min_x, p.x), e.max_x = std::max(e.max_x, p.x);
+        e.min_z = std::min(e.min_z, p.z), e.max_z = std::max(e.max_z, p.z);
+    }
+    return e;
+}
+
 RingMoments ring_moments(const Ring& ring) {
     RingMoments m;
     const std::size_t n = ring.size();
@@ -181,17 +190,22 @@ double distance_integral(const Ring& ring, Point c) {
         const double cross = ax * bz - az * bx;  // twice the signed area of the fan triangle
         const double length_squared = dx * dx + dz * dz;
         if (cross != 0.0 && length_squared != 0.0) {  // else: the edge lies on a line through c
-            const double inverse_length = 1.0 / std::sqrt(length_squared);
-            const double h = std::fabs(cross) * inverse_length;
-            const double s0 = (ax * dx + az * dz) * inverse_length;
-            const double s1 = (bx * dx + bz * dz) * inverse_length;
             // ∫∫_tri r dA = ∫ ρ(φ)³/3 dφ with ρ = h·sec φ (∫ sec³ = ½(sec·tan + ln(sec + tan))), in s = h·tan φ:
-            // (h/6)[s·r + h²·ln(s + r)] between the edge ends. s + r is written h²/(r − s) for s < 0 so
-            // that it never cancels (r² = s² + h²).
-            const double g0 = s0 >= 0.0 ? s0 + r0 : h * h / (r0 - s0);
-            const double g1 = s1 >= 0.0 ? s1 + r1 : h * h / (r1 - s1);
-            const double log_ratio = g0 > 0.0 && g1 > 0.0 ? log_ratio_of(g1, g0) : 0.0;  // 0 only if h² underflows
-            const double triangle = h * (s1 * r1 - s0 * r0 + h * h * log_ratio);  // ×6
+            // (h/6)[s·r + h²·ln(s + r)] between the edge ends, h the distance of c from the edge's line.
+            // With the edge's length L, s = dot/L and h = |cross|/L, so that one division per edge, by L³,
+            // is left besides the logarithm's (each division or root is a few ns; an edge had five):
+            // 6·triangle = |cross|·(L·(dot1·r1 − dot0·r0) + cross²·ln(g1/g0)) / L³, g = s + r.
+            const double length = std::sqrt(length_squared);
+            const double dot0 = ax * dx + az * dz, dot1 = bx * dx + bz * dz;
+            const double cross_squared = cross * cross;
+            // L·g as a fraction n/d: dot + r·L, or for s < 0, where that would cancel (r² = s² + h²),
+            // L·h²/(r − s) = cross²/(r·L − dot).
+            const double n0 = dot0 >= 0.0 ? dot0 + r0 * length : cross_squared, d0 = dot0 >= 0.0 ? 1.0 : r0 * length - dot0;
+            const double n1 = dot1 >= 0.0 ? dot1 + r1 * length : cross_squared, d1 = dot1 >= 0.0 ? 1.0 : r1 * length - dot1;
+            const double g1_scaled = n1 * d0, g0_scaled = n0 * d1;  // g1/g0 = g1_scaled/g0_scaled
+            const double log_ratio = g0_scaled > 0.0 && g1_scaled > 0.0 ? log_ratio_of(g1_scaled, g0_scaled) : 0.0;  // 0 only if cross² underflows
+            const double triangle = std::fabs(cross) * (length * (dot1 * r1 - dot0 * r0) + cross_squared * log_ratio) /
+                                    (length_squared * length);  // ×6
             sum += cross > 0.0 ? triangle : -triangle;
         }
         ax = bx, az = bz, r0 = r1;

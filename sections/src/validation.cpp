@@ -51,20 +51,10 @@ double signed_area(const Ring& ring) {
     return ring_moments(local).area;
 }
 
-struct Box {
-    double min_x, max_x, min_z, max_z;
-    bool overlaps(const Box& o) const {
-        return min_x < o.max_x && o.min_x < max_x && min_z < o.max_z && o.min_z < max_z;
-    }
-};
+using Box = RingExtent;
 
-Box bounding_box(const Ring& ring) {
-    Box b{ring[0].x, ring[0].x, ring[0].z, ring[0].z};
-    for (Point p : ring) {
-        b.min_x = std::min(b.min_x, p.x), b.max_x = std::max(b.max_x, p.x);
-        b.min_z = std::min(b.min_z, p.z), b.max_z = std::max(b.max_z, p.z);
-    }
-    return b;
+bool overlaps(const Box& a, const Box& b) {
+    return a.min_x < b.max_x && b.min_x < a.max_x && a.min_z < b.max_z && b.min_z < a.max_z;
 }
 
 // Drops the closing vertex, then checks what a ring must be on its own: enough vertices,
@@ -87,7 +77,7 @@ Ring checked_ring(Ring ring, const RingId& id) {
         if (same_point(ring[i], ring[next]))
             fail(id.vertex(next), "repeats vertex " + std::to_string(i));
     }
-    const Box box = bounding_box(ring);
+    const Box box = ring_extent(ring);
     const double extent = std::max(box.max_x - box.min_x, box.max_z - box.min_z);
     if (extent < kMinExtent)
         fail(id.name(), "is only " + number(extent) + " m across; the smallest supported ring is 1e-9 m across");
@@ -154,14 +144,14 @@ void check_holes(const Part& part, std::size_t p) {
 // j*0.01 and j*0.01 + 0.01 overlaps by 1e-17 m): accepted; it changes no capacity by more than that.
 void check_parts_apart(const std::vector<Part>& parts) {
     std::vector<Box> boxes;
-    for (const Part& part : parts) boxes.push_back(bounding_box(part.outer));
+    for (const Part& part : parts) boxes.push_back(ring_extent(part.outer));
     std::vector<std::size_t> by_x(parts.size());
     for (std::size_t i = 0; i < by_x.size(); ++i) by_x[i] = i;
     std::sort(by_x.begin(), by_x.end(), [&](std::size_t a, std::size_t b) { return boxes[a].min_x < boxes[b].min_x; });
     for (std::size_t k = 0; k < by_x.size(); ++k) {
         for (std::size_t l = k + 1; l < by_x.size() && boxes[by_x[l]].min_x < boxes[by_x[k]].max_x; ++l) {
             const std::size_t i = std::max(by_x[k], by_x[l]), j = std::min(by_x[k], by_x[l]);
-            if (!boxes[i].overlaps(boxes[j])) continue;
+            if (!overlaps(boxes[i], boxes[j])) continue;
             const double overlap = detail::overlap_area(parts[i], parts[j]);
             const double smaller = std::min(part_moments(parts[i]).area, part_moments(parts[j]).area);
             if (overlap > kRoundOffOverlap * smaller)
@@ -220,13 +210,17 @@ ValidSection validate_section(const Section& section) {
     }
 
     // Local origin: the centre of the bounding box of all parts.
-    Box all = bounding_box(valid.parts_[0].outer);
-    for (const Part& part : valid.parts_) {
-        const Box b = bounding_box(part.outer);
+    std::vector<Box> boxes;
+    for (const Part& part : valid.parts_) boxes.push_back(ring_extent(part.outer));
+    Box all = boxes[0];
+    for (const Box& b : boxes)
         all = {std::min(all.min_x, b.min_x), std::max(all.max_x, b.max_x), std::min(all.min_z, b.min_z),
                std::max(all.max_z, b.max_z)};
-    }
     valid.origin_ = {0.5 * (all.min_x + all.max_x), 0.5 * (all.min_z + all.max_z)};
+    // Shifted as the vertices are: x − origin is monotonic in x, so the box stays exactly the ring's.
+    for (const Box& b : boxes)
+        valid.part_extents_.push_back({b.min_x - valid.origin_.x, b.max_x - valid.origin_.x,
+                                       b.min_z - valid.origin_.z, b.max_z - valid.origin_.z});
     for (Part& part : valid.parts_) {
         for (Point& q : part.outer) q = valid.to_local(q);
         for (Ring& hole : part.holes)

@@ -18,6 +18,12 @@ struct RingMoments {
     double Sz = 0.0;    // ∫ z dA      [m³]
 };
 
+// The axis-aligned box around a ring [m].
+struct RingExtent {
+    double min_x, max_x, min_z, max_z;
+};
+RingExtent ring_extent(const Ring& ring);
+
 // Area and first moments (shoelace / Green's theorem, e.g. Steger, "On the calculation of
 // arbitrary moments of polygons", 1996).
 RingMoments ring_moments(const Ring& ring);

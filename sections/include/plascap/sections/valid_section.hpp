@@ -21,6 +21,8 @@ public:
     // Area and first moments of each part (local coordinates; outer ring less its holes, bars not
     // counted), computed once here for every integral that needs them.
     const std::vector<RingMoments>& part_moments() const { return part_moments_; }
+    // The box around each part's outer ring (local coordinates), for the bending axes' search range.
+    const std::vector<RingExtent>& part_extents() const { return part_extents_; }
     Point local_origin() const { return origin_; }              // section coordinates of local (0, 0)
     ShearCriterion shear() const { return shear_; }
     const std::optional<Point>& reference() const { return reference_; }  // section coordinates
@@ -35,6 +37,7 @@ private:
 
     std::vector<Part> parts_;
     std::vector<RingMoments> part_moments_;
+    std::vector<RingExtent> part_extents_;
     Point origin_;
     ShearCriterion shear_ = ShearCriterion::Tresca;
     std::optional<Point> reference_;
