@@ -73,6 +73,7 @@ public:
 
     double time() const override { return time_; }
     double correction_work() const override { return world_.correction_work(); }
+    double contact_work() const override { return world_.contact_work(); }
 
     void apply_load(std::size_t index, const Vec3& force, const Vec3& point, const Vec3& moment) override {
         btRigidBody& b = boxes_[index]->body();

@@ -57,6 +57,7 @@ void EnergyAccount::after_step(SceneEngine& engine, const std::vector<AppliedLoa
     // The pushes' work against the loads and gravity, and the dissipation the joints booked on flow
     // the pushes drove (plastic_joint_law.hpp): neither is the velocity solve's.
     l.corrections = engine.correction_work() + flow_by_corrections;
+    l.contacts = engine.contact_work();
     l.handled = std::max({l.handled, std::abs(l.kinetic), std::abs(l.gravitational), std::abs(l.elastic),
                           std::abs(l.dissipated), std::abs(l.external_work)});
 }

@@ -17,6 +17,7 @@ struct EnergyLedger {
     double initial = 0.0;        // the kinetic energy at the start [J]
     double corrections = 0.0;    // of the remainder, what the engine's split-impulse position corrections did: their
                                  // work against loads and gravity, and the dissipation booked on flow they drove [J]
+    double contacts = 0.0;       // of the remainder, the work the contacts did (impacts, friction: negative) [J]
     double handled = 0.0;        // the largest of the terms' magnitudes so far [J]: the scale of the remainder
     // kinetic + gravitational + elastic + dissipated − external work − initial [J].
     double remainder() const { return kinetic + gravitational + elastic + dissipated - external_work - initial; }

@@ -97,6 +97,7 @@ public:
     }
 
     double time() const override { return time_; }
+    double contact_work() const override { return joints_.contact_work(); }
 
     void apply_load(std::size_t index, const Vec3& force, const Vec3& point, const Vec3& moment) override {
         if (!bodies_[index]) return;  // a static body takes no load

@@ -181,7 +181,7 @@ nlohmann::json ReplayRecorder::data() const {
     nlohmann::json energy = {{"kinetic", nlohmann::json::array()}, {"gravitational", nlohmann::json::array()},
                              {"elastic", nlohmann::json::array()}, {"dissipated", nlohmann::json::array()},
                              {"external_work", nlohmann::json::array()}, {"remainder", nlohmann::json::array()},
-                             {"corrections", nlohmann::json::array()}};
+                             {"corrections", nlohmann::json::array()}, {"contacts", nlohmann::json::array()}};
     for (const Frame& f : frames_) {
         time.push_back(rounded(f.time));
         for (std::size_t i = 0; i < scene_.bodies.size(); ++i) {
@@ -201,6 +201,7 @@ nlohmann::json ReplayRecorder::data() const {
         energy["external_work"].push_back(rounded(e.external_work));
         energy["remainder"].push_back(rounded(e.remainder()));
         energy["corrections"].push_back(rounded(e.corrections));
+        energy["contacts"].push_back(rounded(e.contacts));
     }
     d["frames"] = {{"count", frames_.size()},
                    {"steps", frame_steps_},

@@ -41,6 +41,9 @@ public:
     // The work the engine's position corrections did outside its velocity solve (Bullet's split
     // impulses), summed over the run [J]; 0 for engines that correct positions in their velocities.
     virtual double correction_work() const { return 0.0; }
+    // The work the contacts did on the bodies, summed over the run [J]: negative where impacts and
+    // friction took energy (plascap/adapters/impulse_work.hpp).
+    virtual double contact_work() const { return 0.0; }
 };
 
 // The engines this build has, by --engine name.

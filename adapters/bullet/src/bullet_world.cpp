@@ -29,7 +29,60 @@ BulletWorld::BulletWorld(const btVector3& gravity, int iterations, BulletSolverK
 
 BulletWorld::~BulletWorld() = default;
 
-void BulletWorld::step(double dt) { world_->stepSimulation(dt, 0, dt); }
+void BulletWorld::step(double dt) {
+    note_step_start();
+    world_->stepSimulation(dt, 0, dt);
+    contact_work_ += contact_work_of_step();
+}
+
+namespace {
+
+Vec3 vec(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
+
+BodyVelocity velocity_of(const btCollisionObject* object) {
+    const btRigidBody* body = btRigidBody::upcast(object);
+    return body ? BodyVelocity{vec(body->getLinearVelocity()), vec(body->getAngularVelocity())} : BodyVelocity{};
+}
+
+}  // namespace
+
+void BulletWorld::note_step_start() {
+    const btCollisionObjectArray& objects = world_->getCollisionObjectArray();
+    start_.resize(static_cast<std::size_t>(objects.size()));
+    for (int i = 0; i < objects.size(); ++i)
+        start_[static_cast<std::size_t>(i)] = {objects[i]->getWorldTransform().getOrigin(), velocity_of(objects[i])};
+}
+
+// Each contact point the solver used (within its manifold's processing threshold; the others keep an
+// old impulse) gave body 0 the impulse P = n·λ + t1·λ1 + t2·λ2 at its point on body 0 and body 1 the
+// opposite at its point on body 1 (btSequentialImpulseConstraintSolver's convention: the normal on B
+// pushes A), with lever arms from the centres at the step's start, where the solver took them.
+double BulletWorld::contact_work_of_step() const {
+    double work = 0.0;
+    btDispatcher* dispatcher = world_->getDispatcher();
+    for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
+        const btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
+        const btCollisionObject* object[2] = {manifold->getBody0(), manifold->getBody1()};
+        const std::size_t index[2] = {static_cast<std::size_t>(object[0]->getWorldArrayIndex()),
+                                      static_cast<std::size_t>(object[1]->getWorldArrayIndex())};
+        if (index[0] >= start_.size() || index[1] >= start_.size()) continue;  // added during the step
+        const BodyVelocity end[2] = {velocity_of(object[0]), velocity_of(object[1])};
+        for (int p = 0; p < manifold->getNumContacts(); ++p) {
+            const btManifoldPoint& point = manifold->getContactPoint(p);
+            if (point.getDistance() > manifold->getContactProcessingThreshold()) continue;
+            const btVector3 impulse = point.m_normalWorldOnB * point.m_appliedImpulse +
+                                      point.m_lateralFrictionDir1 * point.m_appliedImpulseLateral1 +
+                                      point.m_lateralFrictionDir2 * point.m_appliedImpulseLateral2;
+            const btVector3 at[2] = {point.getPositionWorldOnA(), point.getPositionWorldOnB()};
+            for (int k = 0; k < 2; ++k) {
+                const btVector3 on_body = k == 0 ? impulse : -impulse;
+                const BodyStart& start = start_[index[k]];
+                work += impulse_work(vec(on_body), vec((at[k] - start.centre).cross(on_body)), start.velocity, end[k]);
+            }
+        }
+    }
+    return work;
+}
 
 BulletBox::BulletBox(const btVector3& half, double mass, const btTransform& transform, const btVector3* given_inertia)
     : shape_(std::make_unique<btBoxShape>(half)), motion_(std::make_unique<btDefaultMotionState>(transform)) {

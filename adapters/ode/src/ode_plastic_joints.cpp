@@ -4,6 +4,17 @@
 #include <vector>
 
 namespace plascap {
+namespace {
+
+// A body's velocities now; the static world (0) does not move.
+BodyVelocity velocity_of(dBodyID body) {
+    if (!body) return {};
+    const dReal* v = dBodyGetLinearVel(body);
+    const dReal* w = dBodyGetAngularVel(body);
+    return {{v[0], v[1], v[2]}, {w[0], w[1], w[2]}};
+}
+
+}  // namespace
 
 OdePlasticJoint& OdePlasticJoints::add(dBodyID a, dBodyID b, const Pose& frame_in_world,
                                        const PlasticJointSettings& settings, double takes_hold_at) {
@@ -18,11 +29,14 @@ void OdePlasticJoints::step(double dt, Stepper stepper) {
         if (!e.joint->engaged() && e.takes_hold_at < time_ + 0.5 * dt) e.joint->engage(time_);
         if (e.joint->engaged()) e.joint->before_step(dt);
     }
+    for (Contact& contact : contacts_)
+        for (int k = 0; k < 2; ++k) contact.start[k] = velocity_of(contact.body[k]);
     if (stepper == Stepper::Quick) {
         dWorldQuickStep(world_, dt);
     } else {
         dWorldStep(world_, dt);
     }
+    book_contact_work(dt);
     for (Entry& e : joints_) {
         if (!e.joint->engaged()) continue;
         if (e.joint->after_step(dt) == JointEvent::Broke && e.joint->body_a())
@@ -31,20 +45,42 @@ void OdePlasticJoints::step(double dt, Stepper stepper) {
     time_ += dt;
 }
 
+// Each contact's force and torque on each body (its feedback, constant over the step) times dt is the
+// impulse it gave that body: its work from the body's velocities before and after (impulse_work.hpp).
+void OdePlasticJoints::book_contact_work(double dt) {
+    for (const Contact& contact : contacts_) {
+        const dJointFeedback& f = contact.feedback;
+        const dReal* force[2] = {f.f1, f.f2};
+        const dReal* torque[2] = {f.t1, f.t2};
+        for (int k = 0; k < 2; ++k) {
+            if (!contact.body[k]) continue;
+            const Vec3 impulse{force[k][0] * dt, force[k][1] * dt, force[k][2] * dt};
+            const Vec3 angular{torque[k][0] * dt, torque[k][1] * dt, torque[k][2] * dt};
+            contact_work_ += impulse_work(impulse, angular, contact.start[k], velocity_of(contact.body[k]));
+        }
+    }
+    contacts_.clear();  // their joints go with the caller's contact group
+}
+
 bool OdePlasticJoints::joined(dBodyID a, dBodyID b) const { return joined_.count(std::minmax(a, b)) > 0; }
 
-namespace {
+void OdePlasticJoints::attach_contact(dJointGroupID group, const dContact& contact, dBodyID b1, dBodyID b2) {
+    const dJointID joint = dJointCreateContact(world_, group, &contact);
+    dJointAttach(joint, b1, b2);
+    // ODE puts a lone body first (dJointAttach swaps 0 into the second place), and its feedback with it.
+    contacts_.push_back({{b1 ? b1 : b2, b1 ? b2 : nullptr}, {}, {}});
+    dJointSetFeedback(joint, &contacts_.back().feedback);  // a deque's elements stay where they are
+}
 
-struct Collision {
-    const OdePlasticJoints& joints;
-    dWorldID world;
+struct OdePlasticJoints::Collision {
+    OdePlasticJoints& joints;
     dJointGroupID contacts;
     const dSurfaceParameters& surface;
     std::vector<dContact> buffer;
     const std::function<bool(dBodyID, dBodyID)>& skip;
 };
 
-void near_callback(void* data, dGeomID g1, dGeomID g2) {
+void OdePlasticJoints::near_callback(void* data, dGeomID g1, dGeomID g2) {
     Collision& c = *static_cast<Collision*>(data);
     const dBodyID b1 = dGeomGetBody(g1), b2 = dGeomGetBody(g2);
     if (!b1 && !b2) return;                                // static against static
@@ -53,15 +89,13 @@ void near_callback(void* data, dGeomID g1, dGeomID g2) {
     const int n = dCollide(g1, g2, static_cast<int>(c.buffer.size()), &c.buffer[0].geom, sizeof(dContact));
     for (int i = 0; i < n; ++i) {
         c.buffer[i].surface = c.surface;
-        dJointAttach(dJointCreateContact(c.world, c.contacts, &c.buffer[i]), b1, b2);
+        c.joints.attach_contact(c.contacts, c.buffer[i], b1, b2);
     }
 }
 
-}  // namespace
-
 void OdePlasticJoints::collide(dSpaceID space, dJointGroupID contacts, const dSurfaceParameters& surface, int max_contacts,
                                const std::function<bool(dBodyID, dBodyID)>& skip) {
-    Collision c{*this, world_, contacts, surface, std::vector<dContact>(static_cast<std::size_t>(std::max(1, max_contacts))), skip};
+    Collision c{*this, contacts, surface, std::vector<dContact>(static_cast<std::size_t>(std::max(1, max_contacts))), skip};
     dSpaceCollide(space, &c, &near_callback);
 }
 

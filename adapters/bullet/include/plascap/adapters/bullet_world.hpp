@@ -8,8 +8,10 @@
 #include <btBulletDynamicsCommon.h>
 
 #include <memory>
+#include <vector>
 
 #include "plascap/adapters/bullet_plastic_solver.hpp"
+#include "plascap/adapters/impulse_work.hpp"
 
 namespace plascap {
 
@@ -29,10 +31,24 @@ public:
     // The work of the split-impulse position corrections so far (BulletPlasticSolver::correction_work;
     // 0 with Bullet's own solver) [J].
     double correction_work() const { return plascap_solver_ ? plascap_solver_->correction_work() : 0.0; }
+    // The work the contacts' impulses (normal and friction) did on the bodies, summed over the steps so
+    // far [J]: negative where impacts and friction took energy (impulse_work.hpp). Split-impulse pushes
+    // out of a deep penetration move bodies without a velocity and are not in it.
+    double contact_work() const { return contact_work_; }
     // One fixed step of dt seconds (no interpolation sub-steps).
     void step(double dt);
 
 private:
+    // A body's centre and velocities at the step's start, by its place in the world's object array.
+    struct BodyStart {
+        btVector3 centre;
+        BodyVelocity velocity;
+    };
+    void note_step_start();
+    double contact_work_of_step() const;
+
+    std::vector<BodyStart> start_;
+    double contact_work_ = 0.0;
     std::unique_ptr<btDefaultCollisionConfiguration> configuration_;
     std::unique_ptr<btCollisionDispatcher> dispatcher_;
     std::unique_ptr<btDbvtBroadphase> broadphase_;

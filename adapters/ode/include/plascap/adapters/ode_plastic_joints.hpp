@@ -7,14 +7,17 @@
 // near callback that skips bodies held by an intact plastic joint (as Bullet does for a
 // constraint's bodies; once the joint breaks they collide again) — call it before step() and empty
 // the contact group after. A caller with its own near callback skips pairs for which joined(a, b).
+// The contacts collide() makes report their forces, and step() books their work (contact_work()).
 #include <ode/ode.h>
 
+#include <deque>
 #include <functional>
 #include <memory>
 #include <set>
 #include <utility>
 #include <vector>
 
+#include "plascap/adapters/impulse_work.hpp"
 #include "plascap/adapters/ode_plastic_joint.hpp"
 
 namespace plascap {
@@ -47,6 +50,11 @@ public:
     void collide(dSpaceID space, dJointGroupID contacts, const dSurfaceParameters& surface, int max_contacts = 8,
                  const std::function<bool(dBodyID, dBodyID)>& skip = {});
 
+    // The work the contact joints that collide() made did on their bodies, summed over the steps so far
+    // [J]: negative where impacts and friction took energy (impulse_work.hpp). Contact joints a caller
+    // makes itself are not counted.
+    double contact_work() const { return contact_work_; }
+
     double time() const { return time_; }  // [s], the sum of the steps taken
     std::size_t size() const { return joints_.size(); }
     OdePlasticJoint& operator[](std::size_t i) { return *joints_[i].joint; }
@@ -57,10 +65,24 @@ private:
         std::unique_ptr<OdePlasticJoint> joint;
         double takes_hold_at;
     };
+    // A contact joint of the coming step: its bodies (either may be 0, the static world), their
+    // velocities at the step's start, and the forces ODE reports back (at a stable address).
+    struct Contact {
+        dBodyID body[2];
+        BodyVelocity start[2];
+        dJointFeedback feedback;
+    };
+    struct Collision;
+    static void near_callback(void* data, dGeomID g1, dGeomID g2);
+    // Makes a contact joint and has it report its forces into contacts_.
+    void attach_contact(dJointGroupID group, const dContact& contact, dBodyID b1, dBodyID b2);
+    void book_contact_work(double dt);
 
     dWorldID world_;
     std::vector<Entry> joints_;
     std::multiset<std::pair<dBodyID, dBodyID>> joined_;  // intact joints' body pairs, ordered
+    std::deque<Contact> contacts_;  // those collide() made for the coming step
+    double contact_work_ = 0.0;
     double time_ = 0.0;
 };
 
