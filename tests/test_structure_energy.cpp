@@ -80,8 +80,9 @@ TEST(StructureEnergy, RandomFramesCreateNoEnergy) {
         for (const char* engine : {"bullet", "ode"}) {
             const FrameRun r = run_frame(scene, engine);
             const EnergyLedger& l = r.energy;
-            std::printf("frame %d %s: dissipated %.2f, remainder %+.3f (position corrections %+.3f) of %.0f J; closest to a 90-degree twist %.1f deg\n",
-                        frame, engine, l.dissipated / l.handled, l.remainder() / l.handled, l.corrections / l.handled, l.handled,
+            std::printf("frame %d %s: dissipated %.2f, remainder %+.3f (position corrections %+.3f, joints unbooked %+.3f) of %.0f J; closest to a 90-degree twist %.1f deg\n",
+                        frame, engine, l.dissipated / l.handled, l.remainder() / l.handled, l.corrections / l.handled,
+                        l.joints_unbooked / l.handled, l.handled,
                         r.closest_to_quarter_twist * 180 / M_PI);
             ++checked;
             if (l.dissipated > 0.1 * l.handled) ++yielded;
@@ -89,6 +90,8 @@ TEST(StructureEnergy, RandomFramesCreateNoEnergy) {
             // Bullet's split-impulse position corrections do work outside the velocity solve, where
             // the joints act; the ledger measures it (energy_ledger.hpp) and it is left out here.
             EXPECT_LE(l.remainder() - l.corrections, 0.02 * l.handled) << "frame " << frame << " on " << engine << ": " << json;
+            // The same, from the joints' side: their rows' work less what their laws booked (rows_work.hpp).
+            EXPECT_LE(l.joints_unbooked, 0.02 * l.handled) << "frame " << frame << " on " << engine << ": " << json;
         }
     }
     // The property must have been tried where it matters: on frames that yielded substantially, and

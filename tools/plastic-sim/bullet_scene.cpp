@@ -50,6 +50,7 @@ public:
         for (const SceneJoint& j : scene.joints) {
             btRigidBody* a = j.a ? &boxes_[*j.a]->body() : nullptr;
             joints_.push_back(std::make_unique<Joint>(a, boxes_[j.b]->body(), joint_frame(j), j.settings));
+            joints_.back()->count_rows_work();  // for the energy ledger
         }
     }
 
@@ -93,6 +94,7 @@ public:
     }
 
     PerDof<double> joint_forces(std::size_t index) const override { return joints_[index]->forces(); }
+    double joint_rows_work(std::size_t index) const override { return joints_[index]->rows_work(); }
     PerDof<double> joint_positions(std::size_t index) override { return joints_[index]->positions(); }
 
 private:

@@ -36,6 +36,7 @@ void EnergyAccount::after_step(SceneEngine& engine, const std::vector<AppliedLoa
     EnergyLedger& l = ledger_;
     l.kinetic = l.gravitational = l.elastic = l.dissipated = 0.0;
     double flow_by_corrections = 0.0;
+    l.joints_unbooked = 0.0;
     for (std::size_t i = 0; i < scene_.bodies.size(); ++i) {
         if (scene_.bodies[i].is_static) continue;
         const BodyState s = engine.body(i);
@@ -44,9 +45,12 @@ void EnergyAccount::after_step(SceneEngine& engine, const std::vector<AppliedLoa
     }
     for (std::size_t j = 0; j < scene_.joints.size(); ++j) {
         if (const PlasticJointLaw* law = engine.joint_law(j)) {
-            l.elastic += law->elastic_energy(engine.joint_positions(j));
+            const double elastic = law->elastic_energy(engine.joint_positions(j));
+            l.elastic += elastic;
             l.dissipated += law->dissipated();
             flow_by_corrections += law->dissipated_by_corrections();
+            // The rows' work less its booked counterpart: −(elastic + dissipated by the velocity solve).
+            l.joints_unbooked += engine.joint_rows_work(j) + elastic + law->dissipated() - law->dissipated_by_corrections();
         }
     }
     for (const AppliedLoad& a : loads) {

@@ -18,6 +18,10 @@ struct EnergyLedger {
     double corrections = 0.0;    // of the remainder, what the engine's split-impulse position corrections did: their
                                  // work against loads and gravity, and the dissipation booked on flow they drove [J]
     double contacts = 0.0;       // of the remainder, the work the contacts did (impacts, friction: negative) [J]
+    // Of the remainder, the joints' rows' work on their bodies less what the laws booked (elastic energy,
+    // dissipation not driven by corrections): negative where rows gave way or stopped a motion at once
+    // (solver slack), positive where a joint created energy [J].
+    double joints_unbooked = 0.0;
     double handled = 0.0;        // the largest of the terms' magnitudes so far [J]: the scale of the remainder
     // kinetic + gravitational + elastic + dissipated − external work − initial [J].
     double remainder() const { return kinetic + gravitational + elastic + dissipated - external_work - initial; }

@@ -70,7 +70,7 @@ public:
             Pose frame;
             frame.origin = j.anchor;
             for (int r = 0; r < 3; ++r) frame.rotation[r] = {j.axes[0][r], j.axes[1][r], j.axes[2][r]};
-            joints_.add(a, bodies_[j.b], frame, j.settings, j.engage_at);
+            joints_.add(a, bodies_[j.b], frame, j.settings, j.engage_at).count_rows_work();  // for the energy ledger
         }
     }
 
@@ -128,6 +128,7 @@ public:
     }
 
     PerDof<double> joint_forces(std::size_t index) const override { return joints_[index].forces(); }
+    double joint_rows_work(std::size_t index) const override { return joints_[index].rows_work(); }
     PerDof<double> joint_positions(std::size_t index) override { return joints_[index].positions(); }
 
     std::vector<std::string> warnings() const override {

@@ -181,7 +181,8 @@ nlohmann::json ReplayRecorder::data() const {
     nlohmann::json energy = {{"kinetic", nlohmann::json::array()}, {"gravitational", nlohmann::json::array()},
                              {"elastic", nlohmann::json::array()}, {"dissipated", nlohmann::json::array()},
                              {"external_work", nlohmann::json::array()}, {"remainder", nlohmann::json::array()},
-                             {"corrections", nlohmann::json::array()}, {"contacts", nlohmann::json::array()}};
+                             {"corrections", nlohmann::json::array()}, {"contacts", nlohmann::json::array()},
+                             {"joints_unbooked", nlohmann::json::array()}};
     for (const Frame& f : frames_) {
         time.push_back(rounded(f.time));
         for (std::size_t i = 0; i < scene_.bodies.size(); ++i) {
@@ -202,6 +203,7 @@ nlohmann::json ReplayRecorder::data() const {
         energy["remainder"].push_back(rounded(e.remainder()));
         energy["corrections"].push_back(rounded(e.corrections));
         energy["contacts"].push_back(rounded(e.contacts));
+        energy["joints_unbooked"].push_back(rounded(e.joints_unbooked));
     }
     d["frames"] = {{"count", frames_.size()},
                    {"steps", frame_steps_},

@@ -44,6 +44,8 @@ public:
     // The work the contacts did on the bodies, summed over the run [J]: negative where impacts and
     // friction took energy (plascap/adapters/impulse_work.hpp).
     virtual double contact_work() const { return 0.0; }
+    // The work the joint's rows did on its bodies since it took hold [J] (plascap/adapters/rows_work.hpp).
+    virtual double joint_rows_work(std::size_t index) const = 0;
 };
 
 // The engines this build has, by --engine name.

@@ -47,8 +47,8 @@ void write_energy(std::ostream& out, const EnergyLedger& e) {
         << "; remainder (contacts, solver) " << e.remainder() << " = " << std::setprecision(3)
         << (e.handled > 0 ? 100.0 * e.remainder() / e.handled : 0.0) << " % of the " << std::setprecision(6) << e.handled
         << " J handled";
-    if (e.contacts != 0.0) out << ", of which contacts " << e.contacts;
-    if (e.corrections != 0.0) out << (e.contacts != 0.0 ? " and" : ", of which") << " position corrections " << e.corrections;
+    out << ", of which contacts " << e.contacts << ", position corrections " << e.corrections
+        << " and the joints' rows' work unbooked by their laws " << e.joints_unbooked;
     out << '\n';
 }
 
@@ -99,7 +99,7 @@ nlohmann::json json_summary(const Scene& scene, const SimulationResult& r, const
     j["energy"] = {{"kinetic", e.kinetic},         {"gravitational", e.gravitational}, {"elastic", e.elastic},
                    {"dissipated", e.dissipated},   {"external_work", e.external_work}, {"initial", e.initial},
                    {"remainder", e.remainder()},   {"corrections", e.corrections}, {"contacts", e.contacts},
-                   {"handled", e.handled}};
+                   {"joints_unbooked", e.joints_unbooked}, {"handled", e.handled}};
     return j;
 }
 

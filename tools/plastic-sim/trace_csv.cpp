@@ -22,7 +22,7 @@ void write_trace_header(std::ostream& out, const Scene& scene) {
     for (const SceneNode& n : scene.nodes) {
         for (const char* c : {"dx", "dy", "dz"}) out << ",node." << n.name << '.' << c;
     }
-    out << ",energy.kinetic,energy.gravitational,energy.elastic,energy.dissipated,energy.external_work,energy.remainder,energy.corrections,energy.contacts";
+    out << ",energy.kinetic,energy.gravitational,energy.elastic,energy.dissipated,energy.external_work,energy.remainder,energy.corrections,energy.contacts,energy.joints_unbooked";
     out << '\n';
 }
 
@@ -50,7 +50,7 @@ void write_trace_row(std::ostream& out, const Scene& scene, const SceneEngine& e
         for (int i = 0; i < 3; ++i) out << ',' << p[i] - n.position[i];
     }
     out << ',' << e.kinetic << ',' << e.gravitational << ',' << e.elastic << ',' << e.dissipated << ',' << e.external_work << ','
-        << e.remainder() << ',' << e.corrections << ',' << e.contacts;
+        << e.remainder() << ',' << e.corrections << ',' << e.contacts << ',' << e.joints_unbooked;
     out << '\n';
 }
 

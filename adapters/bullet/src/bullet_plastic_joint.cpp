@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "bullet_six_dof_rows.hpp"
+#include "plascap/adapters/bullet_body_velocity.hpp"
 
 namespace plascap {
 namespace {
@@ -49,6 +50,13 @@ void BasicBulletPlasticJoint<Constraint>::attach(btDynamicsWorld& world, double 
     constraint_in_world_ = true;
     world.addAction(this);
     plan(dt, state);
+    note_step_start();
+}
+
+template <class Constraint>
+void BasicBulletPlasticJoint<Constraint>::note_step_start() {
+    if (!rows_work_.counting()) return;
+    rows_work_.step_starts(body_velocity(b_), a_ ? std::optional<BodyVelocity>(body_velocity(*a_)) : std::nullopt);
 }
 
 template <class Constraint>
@@ -94,6 +102,11 @@ void BasicBulletPlasticJoint<Constraint>::updateAction(btCollisionWorld*, btScal
         return;
     }
     const WorldLoad load{to_vec3(feedback_.m_appliedForceBodyB), to_vec3(feedback_.m_appliedTorqueBodyB)};
+    if (rows_work_.counting()) {
+        const WorldLoad on_a{to_vec3(feedback_.m_appliedForceBodyA), to_vec3(feedback_.m_appliedTorqueBodyA)};
+        rows_work_.step_ends(load, on_a, body_velocity(b_), a_ ? std::optional<BodyVelocity>(body_velocity(*a_)) : std::nullopt, dt);
+        note_step_start();  // this step's end is the next one's start
+    }
     const JointFrameState state = bullet_rows::measure(*constraint_);  // the end of this step is the start of the next
     switch (driver_.settle(load, state.positions, dt, bullet_rows::corrected_motion(*constraint_))) {
         case JointEvent::Broke:

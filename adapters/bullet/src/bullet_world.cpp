@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "plascap/adapters/bullet_body_velocity.hpp"
+
 namespace plascap {
 
 namespace {
@@ -41,7 +43,7 @@ Vec3 vec(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
 
 BodyVelocity velocity_of(const btCollisionObject* object) {
     const btRigidBody* body = btRigidBody::upcast(object);
-    return body ? BodyVelocity{vec(body->getLinearVelocity()), vec(body->getAngularVelocity())} : BodyVelocity{};
+    return body ? body_velocity(*body) : BodyVelocity{};
 }
 
 }  // namespace

@@ -93,11 +93,22 @@ std::optional<std::size_t> hinge_dof(const PlasticJointLaw& law) {
     return turning;
 }
 
-void add(WorldLoad& load, const dJointFeedback& fb) {
+// Bodies are attached as (b, a): ODE's f1, t1 act on b, and f2, t2 on a.
+void add(WorldLoad& on_b, WorldLoad& on_a, const dJointFeedback& fb) {
     for (int i = 0; i < 3; ++i) {
-        load.force[i] += fb.f1[i];
-        load.torque_about_com[i] += fb.t1[i];
+        on_b.force[i] += fb.f1[i];
+        on_b.torque_about_com[i] += fb.t1[i];
+        on_a.force[i] += fb.f2[i];
+        on_a.torque_about_com[i] += fb.t2[i];
     }
+}
+
+// A body's velocities now; the world (0) has none.
+std::optional<BodyVelocity> velocity_of(dBodyID body) {
+    if (!body) return std::nullopt;
+    const dReal* v = dBodyGetLinearVel(body);
+    const dReal* w = dBodyGetAngularVel(body);
+    return BodyVelocity{{v[0], v[1], v[2]}, {w[0], w[1], w[2]}};
 }
 
 }  // namespace
@@ -168,6 +179,7 @@ void OdePlasticJoint::before_step(double dt) {
     if (driver_.broken()) return;
     const JointFrameState state = measured_ ? *measured_ : measure();  // the end of a step is the start of the next
     measured_.reset();
+    if (rows_work_.counting()) rows_work_.step_starts(*velocity_of(b_), velocity_of(a_));
     const dReal* centre = dBodyGetPosition(b_);
     const PerDof<std::optional<RowCommand>> commands =
         driver_.plan(state, {centre[0], centre[1], centre[2]}, dt, [&] {
@@ -256,10 +268,11 @@ void OdePlasticJoint::wake() {
 
 JointEvent OdePlasticJoint::after_step(double dt) {
     if (driver_.broken()) return driver_.settle({}, {}, dt);  // None; keeps the clock
-    WorldLoad load;
-    if (rotations_ || hinge_) add(load, rotation_feedback_);
-    if (ball_) add(load, ball_feedback_);
-    for (int i = 0; i < translation_joints_; ++i) add(load, translation_feedback_[i]);
+    WorldLoad load, on_a;
+    if (rotations_ || hinge_) add(load, on_a, rotation_feedback_);
+    if (ball_) add(load, on_a, ball_feedback_);
+    for (int i = 0; i < translation_joints_; ++i) add(load, on_a, translation_feedback_[i]);
+    if (rows_work_.counting()) rows_work_.step_ends(load, on_a, *velocity_of(b_), velocity_of(a_), dt);
     measured_ = measure();
     const JointEvent event = driver_.settle(load, measured_->positions, dt);
     if (event != JointEvent::None) wake();
