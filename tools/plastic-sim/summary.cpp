@@ -48,7 +48,8 @@ void write_energy(std::ostream& out, const EnergyLedger& e) {
         << (e.handled > 0 ? 100.0 * e.remainder() / e.handled : 0.0) << " % of the " << std::setprecision(6) << e.handled
         << " J handled";
     out << ", of which contacts " << e.contacts << ", position corrections " << e.corrections
-        << " and the joints' rows' work unbooked by their laws " << e.joints_unbooked;
+        << " and the joints' rows' work unbooked by their laws " << e.joints_unbooked << "; left (the integrator's error) "
+        << e.remainder() - e.contacts - e.corrections - e.joints_unbooked;
     out << '\n';
 }
 
