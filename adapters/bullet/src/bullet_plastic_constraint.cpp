@@ -2,12 +2,12 @@
 
 #include <cmath>
 
+#include "plascap/adapters/bullet_vec3.hpp"
 #include "plascap/adapters/swing_twist.hpp"
 
 namespace plascap {
 namespace {
 
-Vec3 to_vec3(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
 btVector3 to_bt(const Vec3& v) { return {btScalar(v[0]), btScalar(v[1]), btScalar(v[2])}; }
 
 constexpr double kTurn = 2.0 * 3.14159265358979323846;  // [rad]

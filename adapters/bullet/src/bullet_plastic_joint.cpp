@@ -4,12 +4,11 @@
 #include <utility>
 
 #include "bullet_six_dof_rows.hpp"
-#include "plascap/adapters/bullet_body_velocity.hpp"
+#include "plascap/adapters/bullet_vec3.hpp"
 
 namespace plascap {
 namespace {
 
-Vec3 to_vec3(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
 
 BodyInertia inertia_of(const btRigidBody& body) {
     BodyInertia inertia;

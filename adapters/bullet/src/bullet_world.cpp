@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "plascap/adapters/bullet_body_velocity.hpp"
+#include "plascap/adapters/bullet_vec3.hpp"
 
 namespace plascap {
 
@@ -38,8 +38,6 @@ void BulletWorld::step(double dt) {
 }
 
 namespace {
-
-Vec3 vec(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
 
 BodyVelocity velocity_of(const btCollisionObject* object) {
     const btRigidBody* body = btRigidBody::upcast(object);
@@ -79,7 +77,7 @@ double BulletWorld::contact_work_of_step() const {
             for (int k = 0; k < 2; ++k) {
                 const btVector3 on_body = k == 0 ? impulse : -impulse;
                 const BodyStart& start = start_[index[k]];
-                work += impulse_work(vec(on_body), vec((at[k] - start.centre).cross(on_body)), start.velocity, end[k]);
+                work += impulse_work(to_vec3(on_body), to_vec3((at[k] - start.centre).cross(on_body)), start.velocity, end[k]);
             }
         }
     }
