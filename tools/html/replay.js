@@ -289,7 +289,9 @@
     // The charts.
     const energyKeys = [['kinetic', 'kinetic', '#2b6cb0'], ['gravitational', 'gravitational', '#38a169'],
       ['elastic', 'elastic', '#d69e2e'], ['dissipated', 'dissipated', '#c53030'],
-      ['external_work', 'external work', '#6b46c1'], ['remainder', 'remainder (contacts, solver)', '#4a5568']];
+      ['external_work', 'external work', '#6b46c1'], ['remainder', 'remainder (contacts, solver)', '#4a5568'],
+      ['contacts', 'of it: contacts', '#dd6b20'], ['joints_unbooked', 'of it: joints\' rows unbooked', '#319795']]
+      .filter(function (k) { return Array.isArray(d.energy[k[0]]) && d.energy[k[0]].length === r.frames; });  // older files lack the parts
     let cursorTime = 0;
     const cursor = {
       id: 'plascapCursor',
