@@ -22,6 +22,16 @@ std::vector<AppliedLoad> apply_scene_loads(const Scene& scene, SceneEngine& engi
     return applied;
 }
 
+// The rows' work less its booked counterpart: −(elastic + dissipated by the velocity solve).
+double unbooked_work(const PlasticJointLaw& law, double elastic, double rows_work) {
+    return rows_work + elastic + law.dissipated() - law.dissipated_by_corrections();
+}
+
+double unbooked_work(SceneEngine& engine, std::size_t joint) {
+    const PlasticJointLaw* law = engine.joint_law(joint);
+    return law ? unbooked_work(*law, law->elastic_energy(engine.joint_positions(joint)), engine.joint_rows_work(joint)) : 0.0;
+}
+
 EnergyAccount::EnergyAccount(const Scene& scene, const SceneEngine& engine) : scene_(scene) {
     for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
         const BodyState s = engine.body(i);
@@ -49,8 +59,7 @@ void EnergyAccount::after_step(SceneEngine& engine, const std::vector<AppliedLoa
             l.elastic += elastic;
             l.dissipated += law->dissipated();
             flow_by_corrections += law->dissipated_by_corrections();
-            // The rows' work less its booked counterpart: −(elastic + dissipated by the velocity solve).
-            l.joints_unbooked += engine.joint_rows_work(j) + elastic + law->dissipated() - law->dissipated_by_corrections();
+            l.joints_unbooked += unbooked_work(*law, elastic, engine.joint_rows_work(j));
         }
     }
     for (const AppliedLoad& a : loads) {

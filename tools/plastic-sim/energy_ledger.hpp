@@ -35,6 +35,10 @@ struct AppliedLoad {
     Vec3 force{}, moment{};
 };
 
+// One joint's share of joints_unbooked [J] (0 before it takes hold); `elastic` is its elastic energy now.
+double unbooked_work(const PlasticJointLaw& law, double elastic, double rows_work);
+double unbooked_work(SceneEngine& engine, std::size_t joint);
+
 // Applies every scene load at the engine's time (its history factor then), for the next step.
 std::vector<AppliedLoad> apply_scene_loads(const Scene& scene, SceneEngine& engine);
 

@@ -57,7 +57,10 @@ SimulationResult run_simulation(const Scene& scene, SceneEngine& engine, const S
     result.time = engine.time();
     result.wall_seconds = seconds_since(start);
     for (std::size_t i = 0; i < scene.bodies.size(); ++i) result.bodies.push_back(engine.body(i));
-    for (std::size_t j = 0; j < scene.joints.size(); ++j) result.joints.push_back(summarise(engine.joint_law(j)));
+    for (std::size_t j = 0; j < scene.joints.size(); ++j) {
+        result.joints.push_back(summarise(engine.joint_law(j)));
+        result.joints.back().unbooked = unbooked_work(engine, j);
+    }
     for (const SceneNode& n : scene.nodes) result.nodes.push_back(world_point(engine.body(n.at.body), n.at.local));
     result.energy = energy.ledger();
     result.warnings = engine.warnings();

@@ -17,6 +17,7 @@ struct JointSummary {
     double plastic_displacement = 0.0;  // [m]
     double plastic_rotation = 0.0;      // [rad]
     double dissipated = 0.0;            // [J]
+    double unbooked = 0.0;              // its rows' work its law did not book (energy_ledger.hpp) [J]
     PerDof<std::optional<Regime>> regimes;  // plastic dofs: the regime of the last step
     PerDof<double> omega_dt{};              // plastic dofs with a spring: ω·dt (eq. 3.2)
 };

@@ -89,6 +89,7 @@ nlohmann::json json_summary(const Scene& scene, const SimulationResult& r, const
             {"plastic_displacement", s.plastic_displacement},
             {"plastic_rotation", s.plastic_rotation},
             {"dissipated", s.dissipated},
+            {"unbooked", s.unbooked},
             {"dofs", regimes_json(scene.joints[k], s)}};
     }
     if (!scene.nodes.empty()) {
