@@ -14,9 +14,17 @@
 namespace plascap {
 namespace {
 
-EnergyLedger run(const Scene& scene, const std::string& engine) {
+SimulationResult run_result(const Scene& scene, const std::string& engine) {
     const std::unique_ptr<SceneEngine> e = make_engine(engine, scene);
-    return run_simulation(scene, *e, {}).energy;
+    return run_simulation(scene, *e, {});
+}
+
+EnergyLedger run(const Scene& scene, const std::string& engine) { return run_result(scene, engine).energy; }
+
+bool warns_of_created_energy(const SimulationResult& r) {
+    for (const std::string& w : r.warnings)
+        if (w.find("energy was created") != std::string::npos) return true;
+    return false;
 }
 
 std::vector<std::string> engines() {
@@ -35,7 +43,11 @@ TEST(LedgerClosure, EveryExampleIsAccountedForOnEveryEngine) {
     for (const char* name : {"cantilever-bending", "charpy-impact", "collapsing-stack", "paper-tension-block", "simply-supported-beam"}) {
         const Scene scene = read_scene_file(std::string(PLASCAP_SOURCE_DIR "/examples/scenes/") + name + ".json");
         for (const std::string& engine : engines()) {
-            const EnergyLedger l = run(scene, engine);
+            const SimulationResult r = run_result(scene, engine);
+            const EnergyLedger& l = r.energy;
+            if (engine != "bullet-spring2") {
+                EXPECT_FALSE(warns_of_created_energy(r)) << name << " on " << engine;
+            }
             const double left = l.remainder() - l.contacts - l.corrections - l.joints_unbooked;
             const double tolerance = std::string(name) == "simply-supported-beam" ? 0.03 : 0.005;
             EXPECT_NEAR(left, 0.0, tolerance * l.handled) << name << " on " << engine << ": remainder " << l.remainder()
@@ -57,6 +69,25 @@ TEST(LedgerClosure, TheTensionBlocksUnbookedWorkIsTheIntegratorsHalfStep) {
         const EnergyLedger l = run(scene, engine);
         EXPECT_NEAR(l.joints_unbooked, expected, 0.005 * std::abs(expected)) << engine;
     }
+}
+
+// plastic-sim warns when the joints' unbooked work exceeds +2 % of the energy handled, naming the joint
+// with the most. Bullet's 6-dof spring paths do that in the collapsing stack's break (measured
+// 2026-12-03: +7.9 %, joint-2 +1.34 kJ; docs/structures.md, "Known limits") — the case this checks;
+// should those paths stop creating energy there, it needs another.
+TEST(LedgerClosure, CreatedEnergyIsWarnedOfNamingTheJoint) {
+    const Scene scene = read_scene_file(PLASCAP_SOURCE_DIR "/examples/scenes/collapsing-stack.json");
+    bool tried = false;
+    for (const std::string& engine : available_engines()) {
+        if (engine != "bullet-spring2") continue;
+        tried = true;
+        const SimulationResult r = run_result(scene, engine);
+        ASSERT_TRUE(warns_of_created_energy(r)) << "joints_unbooked " << r.energy.joints_unbooked << " of " << r.energy.handled;
+        bool named = false;
+        for (const std::string& w : r.warnings) named = named || w.find("\"joint-2\"") != std::string::npos;
+        EXPECT_TRUE(named);
+    }
+    EXPECT_TRUE(tried) << "this build has no bullet-spring2 engine";
 }
 
 }  // namespace

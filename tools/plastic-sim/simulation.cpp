@@ -1,7 +1,11 @@
 #include "simulation.hpp"
 
 #include <chrono>
+#include <iomanip>
+#include <optional>
 #include <ostream>
+#include <sstream>
+#include <string>
 
 #include "body_energy.hpp"
 #include "replay_recorder.hpp"
@@ -29,6 +33,23 @@ JointSummary summarise(const PlasticJointLaw* law) {
         }
     }
     return s;
+}
+
+// The joints' rows did more work on their bodies than their laws booked, by more than 2 % of the energy
+// handled (the ledger's tolerance, docs/structures.md): some joint created energy. Names the joint
+// with the most.
+std::optional<std::string> energy_created_warning(const Scene& scene, const SimulationResult& r) {
+    const EnergyLedger& e = r.energy;
+    if (!(e.joints_unbooked > 0.02 * e.handled)) return std::nullopt;
+    std::size_t worst = 0;
+    for (std::size_t j = 1; j < r.joints.size(); ++j)
+        if (r.joints[j].unbooked > r.joints[worst].unbooked) worst = j;
+    std::ostringstream w;
+    w << std::setprecision(4) << "the joints' rows did " << e.joints_unbooked << " J (" << std::fixed << std::setprecision(1)
+      << 100.0 * e.joints_unbooked / e.handled << " % of the energy handled) more work than their laws booked: energy was created, most by joint \""
+      << scene.joints[worst].name << "\" (" << std::defaultfloat << std::setprecision(4) << r.joints[worst].unbooked
+      << " J); see docs/structures.md, \"Output\" (joints_unbooked)";
+    return w.str();
 }
 
 }  // namespace
@@ -64,6 +85,7 @@ SimulationResult run_simulation(const Scene& scene, SceneEngine& engine, const S
     for (const SceneNode& n : scene.nodes) result.nodes.push_back(world_point(engine.body(n.at.body), n.at.local));
     result.energy = energy.ledger();
     result.warnings = engine.warnings();
+    if (const std::optional<std::string> w = energy_created_warning(scene, result)) result.warnings.push_back(*w);
     return result;
 }
 
