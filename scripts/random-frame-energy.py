@@ -3,9 +3,9 @@
 3 to 5 nodes in a box of 4 x 3 x 1 m, a tree of members of random standard shapes (S355) and 1 to 4
 segments, fixed at the first node, gravity and one ramped random force — run on Bullet and ODE; prints
 the energy ledger's remainder as a share of the energy handled, the part of it Bullet's position
-corrections did, and the dissipated energy. A joint law
-that never creates energy keeps the remainder at or below 0 (the solver's slack only takes energy)
-and the dissipated energy at or above 0.
+corrections did, the joints' rows' work their laws did not book (joints_unbooked), and the dissipated
+energy. A joint law that never creates energy keeps joints_unbooked at or below 0 (the solver's slack
+only takes energy) and the dissipated energy at or above 0.
 Usage: scripts/random-frame-energy.py [SEED] [FRAMES] [coupled|box]   (after scripts/build.sh)."""
 import json
 import random
@@ -33,7 +33,7 @@ def main():
     count = int(sys.argv[2]) if len(sys.argv) > 2 else 6
     yield_surface = sys.argv[3] if len(sys.argv) > 3 else "coupled"
     rng = random.Random(seed)
-    print("frame engine remainder/handled corrections/handled handled[J] dissipated[J]")
+    print("frame engine remainder/handled corrections/handled joints_unbooked/handled handled[J] dissipated[J]")
     for k in range(count):
         scene = frame(rng, yield_surface)
         for engine in ["bullet", "ode"]:
@@ -44,7 +44,7 @@ def main():
             e = json.loads(run.stdout)["energy"]
             scale = max(e["handled"], 1e-9)
             print(k, engine, "%+.3f" % (e["remainder"] / scale), "%+.3f" % (e.get("corrections", 0.0) / scale),
-                  "%.0f" % e["handled"], "%.0f" % e["dissipated"])
+                  "%+.3f" % (e.get("joints_unbooked", 0.0) / scale), "%.0f" % e["handled"], "%.0f" % e["dissipated"])
 
 
 if __name__ == "__main__":
