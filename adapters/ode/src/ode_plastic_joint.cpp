@@ -5,6 +5,7 @@
 #include "plascap/adapters/joint_loads.hpp"
 #include "plascap/adapters/row_effective_mass.hpp"
 #include "plascap/adapters/swing_twist.hpp"
+#include "ode_body_velocity.hpp"
 
 namespace plascap {
 namespace {
@@ -103,13 +104,6 @@ void add(WorldLoad& on_b, WorldLoad& on_a, const dJointFeedback& fb) {
     }
 }
 
-// A body's velocities now; the world (0) has none.
-std::optional<BodyVelocity> velocity_of(dBodyID body) {
-    if (!body) return std::nullopt;
-    const dReal* v = dBodyGetLinearVel(body);
-    const dReal* w = dBodyGetAngularVel(body);
-    return BodyVelocity{{v[0], v[1], v[2]}, {w[0], w[1], w[2]}};
-}
 
 }  // namespace
 
@@ -175,11 +169,15 @@ JointFrameState OdePlasticJoint::measure() const {
     return measure_joint_swing_twist(on_a, compose(pose_of(b_), frame_on_b_));
 }
 
+std::optional<BodyVelocity> OdePlasticJoint::a_body_velocity() const {
+    return a_ ? std::optional<BodyVelocity>(body_velocity(a_)) : std::nullopt;
+}
+
 void OdePlasticJoint::before_step(double dt) {
     if (driver_.broken()) return;
     const JointFrameState state = measured_ ? *measured_ : measure();  // the end of a step is the start of the next
     measured_.reset();
-    if (rows_work_.counting()) rows_work_.step_starts(*velocity_of(b_), velocity_of(a_));
+    if (rows_work_.counting()) rows_work_.step_starts(body_velocity(b_), a_body_velocity());
     const dReal* centre = dBodyGetPosition(b_);
     const PerDof<std::optional<RowCommand>> commands =
         driver_.plan(state, {centre[0], centre[1], centre[2]}, dt, [&] {
@@ -272,7 +270,7 @@ JointEvent OdePlasticJoint::after_step(double dt) {
     if (rotations_ || hinge_) add(load, on_a, rotation_feedback_);
     if (ball_) add(load, on_a, ball_feedback_);
     for (int i = 0; i < translation_joints_; ++i) add(load, on_a, translation_feedback_[i]);
-    if (rows_work_.counting()) rows_work_.step_ends(load, on_a, *velocity_of(b_), velocity_of(a_), dt);
+    if (rows_work_.counting()) rows_work_.step_ends(load, on_a, body_velocity(b_), a_body_velocity(), dt);
     measured_ = measure();
     const JointEvent event = driver_.settle(load, measured_->positions, dt);
     if (event != JointEvent::None) wake();

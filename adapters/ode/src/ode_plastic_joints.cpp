@@ -3,18 +3,9 @@
 #include <algorithm>
 #include <vector>
 
+#include "ode_body_velocity.hpp"
+
 namespace plascap {
-namespace {
-
-// A body's velocities now; the static world (0) does not move.
-BodyVelocity velocity_of(dBodyID body) {
-    if (!body) return {};
-    const dReal* v = dBodyGetLinearVel(body);
-    const dReal* w = dBodyGetAngularVel(body);
-    return {{v[0], v[1], v[2]}, {w[0], w[1], w[2]}};
-}
-
-}  // namespace
 
 OdePlasticJoint& OdePlasticJoints::add(dBodyID a, dBodyID b, const Pose& frame_in_world,
                                        const PlasticJointSettings& settings, double takes_hold_at) {
@@ -30,7 +21,7 @@ void OdePlasticJoints::step(double dt, Stepper stepper) {
         if (e.joint->engaged()) e.joint->before_step(dt);
     }
     for (Contact& contact : contacts_)
-        for (int k = 0; k < 2; ++k) contact.start[k] = velocity_of(contact.body[k]);
+        for (int k = 0; k < 2; ++k) contact.start[k] = body_velocity(contact.body[k]);
     if (stepper == Stepper::Quick) {
         dWorldQuickStep(world_, dt);
     } else {
@@ -56,7 +47,7 @@ void OdePlasticJoints::book_contact_work(double dt) {
             if (!contact.body[k]) continue;
             const Vec3 impulse{force[k][0] * dt, force[k][1] * dt, force[k][2] * dt};
             const Vec3 angular{torque[k][0] * dt, torque[k][1] * dt, torque[k][2] * dt};
-            contact_work_ += impulse_work(impulse, angular, contact.start[k], velocity_of(contact.body[k]));
+            contact_work_ += impulse_work(impulse, angular, contact.start[k], body_velocity(contact.body[k]));
         }
     }
     contacts_.clear();  // their joints go with the caller's contact group

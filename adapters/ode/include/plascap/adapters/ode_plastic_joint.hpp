@@ -67,6 +67,7 @@ public:
 
 private:
     JointFrameState measure() const;
+    std::optional<BodyVelocity> a_body_velocity() const;  // none when b is joined to the world
     void wake();
     void set_rotation_rows(const JointFrameState& state, const PerDof<std::optional<RowCommand>>& commands, double dt);
     void set_translation_rows(const JointFrameState& state, const PerDof<std::optional<RowCommand>>& commands, double dt);
