@@ -6,22 +6,18 @@
 #include "plascap/adapters/row_effective_mass.hpp"
 #include "plascap/adapters/swing_twist.hpp"
 #include "ode_body_velocity.hpp"
+#include "ode_plastic_rows.hpp"
 
 namespace plascap {
 namespace {
 
-// What ODE's rows measure and carry: swing and twist (swing_twist.hpp) on the AMotor's rows, as on
-// plascap's Bullet constraint, and a motor's one symmetric bound.
-constexpr RowCapabilities kOdeRows{RotationMeasure::SwingTwist, false};
+// What plascap's ODE rows (ode_plastic_rows.hpp) measure and carry: swing and twist, and both
+// capacities of a Hold row as its two bounds, as plascap's Bullet constraint.
+constexpr RowCapabilities kOdeRows{RotationMeasure::SwingTwist, true};
 
-// As in the Bullet adapter: a Push row asks for an unreachable speed and so ends on its bound.
+// As in the Bullet adapter: a Push row asks for an unreachable speed and so ends on its bound. Its
+// force range stays [−|F|, |F|]: ODE's dWorldStep (Dantzig) needs lower ≤ 0 ≤ upper.
 constexpr double kPushSpeed = 1e4;
-// Makes a contact joint's normal row inert: its force is (error)/(CFM) ≈ 0.
-constexpr double kInertCfm = 1e3;
-// The bound of a rigid row. Not dInfinity: a contact joint counts a friction row with an infinite
-// bound as unbounded and ODE's dWorldStep then takes its (bounded) normal row for unbounded too and
-// fails an assertion inside its LCP solver.
-constexpr double kUnbounded = 1e12;  // [N, N·m]
 
 Pose pose_of(dBodyID body) {
     Pose p;
@@ -55,55 +51,15 @@ BodyInertia inertia_of(dBodyID body) {
     return inertia;
 }
 
-// A row's target velocity and force bound for one dof this step.
-struct RowSetting {
-    double velocity = 0.0;
-    double bound = 0.0;  // 0: no row
-};
-
-RowSetting row_setting(DofMode mode, const std::optional<RowCommand>& command, double position, double reference,
-                       double dt) {
-    if (mode == DofMode::Free) return {};
-    if (mode == DofMode::Rigid) return {-kHoldCorrection * (position - reference) / dt, kUnbounded};
-    if (command->kind == RowCommand::Kind::Hold) return {command->velocity, command->bound};
-    return {command->force > 0.0 ? kPushSpeed : -kPushSpeed, std::abs(command->force)};
+// Dof i's row for the next step; none for a free dof.
+std::optional<OdeRowTarget> row_target(DofMode mode, const std::optional<RowCommand>& command, double position,
+                                       double reference, double dt) {
+    if (mode == DofMode::Free) return std::nullopt;
+    if (mode == DofMode::Rigid) return OdeRowTarget{-kHoldCorrection * (position - reference) / dt, -dInfinity, dInfinity};
+    if (command->kind == RowCommand::Kind::Hold) return OdeRowTarget{command->velocity, command->lower, command->upper};
+    const double f = std::abs(command->force);
+    return OdeRowTarget{command->force > 0.0 ? kPushSpeed : -kPushSpeed, -f, f};
 }
-
-// A rotation row along the unit direction n = g/|g| of its angle's gradient g (ODE normalises an
-// AMotor's axes, and a hinge's axis is that direction while it holds the other two rotations)
-// measures n·ω = θ̇/|g| and applies, with a moment λ·n, the generalised force λ/|g|
-// (swing_twist.hpp): its target rate is the angle's over |g|, its bound the dof's times |g|.
-RowSetting rotation_row_setting(const PlasticJointDriver& driver, const JointFrameState& state,
-                                const std::optional<RowCommand>& command, std::size_t dof, double dt) {
-    const double length = norm(state.axes.rotation[dof - 3]);
-    const RowSetting row = row_setting(driver.law().mode(kAllDofs[dof]), command, state.positions[dof],
-                                       driver.engaged_positions()[dof], dt);
-    return {row.velocity / length, row.bound * length};
-}
-
-// The one rotation a hinge joint may carry: all three translations rigid, exactly one rotation not
-// rigid (plastic, elastic or free), the other two rigid. ODE's hinge joint is then the whole joint,
-// six rows in one joint as ODE's fixed joint has, where a ball joint and an AMotor are two.
-std::optional<std::size_t> hinge_dof(const PlasticJointLaw& law) {
-    std::optional<std::size_t> turning;
-    for (std::size_t i = 0; i < kAllDofs.size(); ++i) {
-        if (law.mode(kAllDofs[i]) == DofMode::Rigid) continue;
-        if (!is_rotation(kAllDofs[i]) || turning) return std::nullopt;
-        turning = i;
-    }
-    return turning;
-}
-
-// Bodies are attached as (b, a): ODE's f1, t1 act on b, and f2, t2 on a.
-void add(WorldLoad& on_b, WorldLoad& on_a, const dJointFeedback& fb) {
-    for (int i = 0; i < 3; ++i) {
-        on_b.force[i] += fb.f1[i];
-        on_b.torque_about_com[i] += fb.t1[i];
-        on_a.force[i] += fb.f2[i];
-        on_a.torque_about_com[i] += fb.t2[i];
-    }
-}
-
 
 }  // namespace
 
@@ -112,57 +68,13 @@ OdePlasticJoint::OdePlasticJoint(dWorldID world, dBodyID a, dBodyID b, const Pos
     : world_(world), a_(a), b_(b), driver_(settings, kOdeRows) {
     frame_on_a_ = a ? relative(pose_of(a), frame_in_world) : frame_in_world;
     frame_on_b_ = relative(pose_of(b), frame_in_world);
-    translations_ = dJointGroupCreate(0);
-    const PlasticJointLaw& law = driver_.law();
-    hinge_dof_ = hinge_dof(law);
-    if (hinge_dof_) {
-        hinge_ = dJointCreateHinge(world_, nullptr);
-        dJointAttach(hinge_, b_, a_);  // body 1 = b: the motor row's velocity is +(the dof's rate)
-        dJointSetFeedback(hinge_, &rotation_feedback_);
-        hold_hinge_where_it_is(measure());
-        return;
-    }
-    bool any_rotation_row = false;
-    for (Dof dof : kAllDofs) {
-        if (is_rotation(dof) && law.mode(dof) != DofMode::Free) any_rotation_row = true;
-    }
-    if (any_rotation_row) {
-        rotations_ = dJointCreateAMotor(world_, nullptr);
-        dJointAttach(rotations_, b_, a_);  // body 1 = b: a row's velocity is +(the dof's rate)
-        dJointSetAMotorMode(rotations_, dAMotorUser);
-        dJointSetAMotorNumAxes(rotations_, 3);
-        dJointSetFeedback(rotations_, &rotation_feedback_);
-    }
-    if (law.mode(Dof::Qx) == DofMode::Rigid && law.mode(Dof::N) == DofMode::Rigid && law.mode(Dof::Qz) == DofMode::Rigid) {
-        ball_ = dJointCreateBall(world_, nullptr);
-        dJointAttach(ball_, b_, a_);
-        dJointSetBallAnchor(ball_, frame_in_world.origin[0], frame_in_world.origin[1], frame_in_world.origin[2]);
-        dJointSetFeedback(ball_, &ball_feedback_);
-    }
+    rows_ = OdePlasticRows::create(world_, b_, a_);
+    dJointSetFeedback(rows_, &feedback_);
 }
 
-OdePlasticJoint::~OdePlasticJoint() {
-    if (hinge_) dJointDestroy(hinge_);
-    if (rotations_) dJointDestroy(rotations_);
-    if (ball_) dJointDestroy(ball_);
-    dJointGroupDestroy(translations_);
-}
+OdePlasticJoint::~OdePlasticJoint() { dJointDestroy(rows_); }
 
-void OdePlasticJoint::engage(double now) {
-    const JointFrameState state = measure();
-    // Hold the anchor (and a hinge the other two rotations) where it is now.
-    if (ball_) dJointSetBallAnchor(ball_, state.axes.anchor[0], state.axes.anchor[1], state.axes.anchor[2]);
-    if (hinge_) hold_hinge_where_it_is(state);
-    driver_.engage(state.positions, now);
-}
-
-void OdePlasticJoint::hold_hinge_where_it_is(const JointFrameState& state) {
-    // ODE keeps the axis in each body's coordinates as it is in the world now: the hinge holds the
-    // anchor and the two other rotations as they are, and its motor row turns about the axis.
-    const Vec3& axis = state.axes.rotation[*hinge_dof_ - 3];
-    dJointSetHingeAnchor(hinge_, state.axes.anchor[0], state.axes.anchor[1], state.axes.anchor[2]);
-    dJointSetHingeAxis(hinge_, axis[0], axis[1], axis[2]);
-}
+void OdePlasticJoint::engage(double now) { driver_.engage(measure().positions, now); }
 
 JointFrameState OdePlasticJoint::measure() const {
     const Pose on_a = a_ ? compose(pose_of(a_), frame_on_a_) : frame_on_a_;
@@ -183,80 +95,12 @@ void OdePlasticJoint::before_step(double dt) {
         driver_.plan(state, {centre[0], centre[1], centre[2]}, dt, [&] {
             return std::pair{inertia_of(b_), a_ ? std::optional<BodyInertia>(inertia_of(a_)) : std::nullopt};
         });
-    set_rotation_rows(state, commands, dt);
-    set_translation_rows(state, commands, dt);
-}
-
-void OdePlasticJoint::set_rotation_rows(const JointFrameState& state, const PerDof<std::optional<RowCommand>>& commands,
-                                        double dt) {
-    if (hinge_) {
-        set_hinge_motor(state, commands, dt);
-        return;
+    PerDof<std::optional<OdeRowTarget>> targets;
+    for (std::size_t i = 0; i < kAllDofs.size(); ++i) {
+        targets[i] = row_target(driver_.law().mode(kAllDofs[i]), commands[i], state.positions[i],
+                                driver_.engaged_positions()[i], dt);
     }
-    if (!rotations_) return;
-    static constexpr int kVel[3] = {dParamVel1, dParamVel2, dParamVel3};
-    static constexpr int kFMax[3] = {dParamFMax1, dParamFMax2, dParamFMax3};
-    for (int i = 0; i < 3; ++i) {
-        const Vec3& gradient = state.axes.rotation[i];
-        dJointSetAMotorAxis(rotations_, i, 0, gradient[0], gradient[1], gradient[2]);  // rel 0: world axes
-        const std::size_t dof = 3 + static_cast<std::size_t>(i);
-        const RowSetting row = rotation_row_setting(driver_, state, commands[dof], dof, dt);
-        dJointSetAMotorParam(rotations_, kVel[i], row.velocity);
-        dJointSetAMotorParam(rotations_, kFMax[i], row.bound);
-    }
-}
-
-void OdePlasticJoint::set_hinge_motor(const JointFrameState& state, const PerDof<std::optional<RowCommand>>& commands,
-                                      double dt) {
-    const RowSetting row = rotation_row_setting(driver_, state, commands[*hinge_dof_], *hinge_dof_, dt);
-    dJointSetHingeParam(hinge_, dParamVel, row.velocity);
-    dJointSetHingeParam(hinge_, dParamFMax, row.bound);
-}
-
-void OdePlasticJoint::set_translation_rows(const JointFrameState& state,
-                                           const PerDof<std::optional<RowCommand>>& commands, double dt) {
-    if (ball_ || hinge_) return;  // they hold all three
-    dJointGroupEmpty(translations_);
-    translation_joints_ = 0;
-    std::array<RowSetting, 3> rows;
-    for (std::size_t i = 0; i < 3; ++i) {
-        rows[i] = row_setting(driver_.law().mode(kAllDofs[i]), commands[i], state.positions[i],
-                              driver_.engaged_positions()[i], dt);
-    }
-    // Contact 1: normal along z, rows along x (fdir1) and y (= z × x); contact 2: normal along x,
-    // a row along z.
-    struct Pair {
-        std::size_t normal, first, second;
-        bool has_second;
-    };
-    const Pair pairs[2] = {{2, 0, 1, true}, {0, 2, 0, false}};
-    for (const Pair& p : pairs) {
-        const bool first = rows[p.first].bound > 0.0, second = p.has_second && rows[p.second].bound > 0.0;
-        if (!first && !second) continue;
-        dContact c{};
-        c.surface.mode = dContactMu2 | dContactFDir1 | dContactMotion1 | dContactMotion2 | dContactSoftCFM;
-        c.surface.mu = rows[p.first].bound;
-        c.surface.motion1 = rows[p.first].velocity;
-        c.surface.mu2 = second ? rows[p.second].bound : 0.0;
-        c.surface.motion2 = second ? rows[p.second].velocity : 0.0;
-        c.surface.soft_cfm = kInertCfm;
-        for (int k = 0; k < 3; ++k) {
-            c.geom.pos[k] = state.axes.anchor[k];
-            c.geom.normal[k] = state.axes.translation[p.normal][k];
-            c.fdir1[k] = state.axes.translation[p.first][k];
-        }
-        dJointID joint = dJointCreateContact(world_, translations_, &c);
-        dJointAttach(joint, b_, a_);
-        dJointSetFeedback(joint, &translation_feedback_[translation_joints_++]);
-    }
-}
-
-void OdePlasticJoint::disable_rows() {
-    if (hinge_) dJointDisable(hinge_);
-    if (rotations_) dJointDisable(rotations_);
-    if (ball_) dJointDisable(ball_);
-    dJointGroupEmpty(translations_);
-    translation_joints_ = 0;
+    static_cast<OdePlasticRows*>(rows_)->set_rows(state, targets);
 }
 
 void OdePlasticJoint::wake() {
@@ -266,15 +110,14 @@ void OdePlasticJoint::wake() {
 
 JointEvent OdePlasticJoint::after_step(double dt) {
     if (driver_.broken()) return driver_.settle({}, {}, dt);  // None; keeps the clock
-    WorldLoad load, on_a;
-    if (rotations_ || hinge_) add(load, on_a, rotation_feedback_);
-    if (ball_) add(load, on_a, ball_feedback_);
-    for (int i = 0; i < translation_joints_; ++i) add(load, on_a, translation_feedback_[i]);
-    if (rows_work_.counting()) rows_work_.step_ends(load, on_a, body_velocity(b_), a_body_velocity(), dt);
+    // Bodies are attached as (b, a): ODE's f1, t1 act on b, and f2, t2 on a.
+    const WorldLoad on_b{{feedback_.f1[0], feedback_.f1[1], feedback_.f1[2]}, {feedback_.t1[0], feedback_.t1[1], feedback_.t1[2]}};
+    const WorldLoad on_a{{feedback_.f2[0], feedback_.f2[1], feedback_.f2[2]}, {feedback_.t2[0], feedback_.t2[1], feedback_.t2[2]}};
+    if (rows_work_.counting()) rows_work_.step_ends(on_b, on_a, body_velocity(b_), a_body_velocity(), dt);
     measured_ = measure();
-    const JointEvent event = driver_.settle(load, measured_->positions, dt);
+    const JointEvent event = driver_.settle(on_b, measured_->positions, dt);
     if (event != JointEvent::None) wake();
-    if (event == JointEvent::Broke) disable_rows();  // broken stays broken
+    if (event == JointEvent::Broke) dJointDisable(rows_);  // broken stays broken
     return event;
 }
 

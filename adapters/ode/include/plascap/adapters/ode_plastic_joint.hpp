@@ -1,23 +1,16 @@
 #pragma once
-// A plastic joint in an unmodified ODE (double precision), driving ODE rows from the shared
-// PlasticJointLaw (adapters/common), as the Bullet adapter drives Bullet's:
-//   rotations: one dJointTypeAMotor in user mode whose three axes are reset every step to the
-//     directions of the swing and twist angles' gradients (swing_twist.hpp), as plascap's Bullet
-//     constraint measures them, so a dof means the same in both engines and there is no Euler
-//     singularity at a 90° twist;
-//   translations: ODE's LMotor applies its rows at the midpoint between the bodies' centres, not at
-//     the anchor, so the translation rows are the two tangential rows of contact joints placed at
-//     the anchor each step (their bounds are forces, their target velocities set; the contact's own
-//     normal row is made inert with a large CFM). A row at the anchor is what a joint is. When all
-//     three translations are rigid, one ball-and-socket joint at the anchor does it more cheaply.
-//   a plastic hinge (one rotation not rigid, the other five dofs rigid): one ODE hinge joint about
-//     that rotation's axis, whose motor row is the dof's row: six rows in one joint, as ODE's own
-//     fixed joint, instead of a ball joint and an AMotor.
-// Rigid dofs are rows with unbounded force and a Baumgarte target (ERP kHoldCorrection); free dofs
-// get no row. Feedback (dJointFeedback, world frame, torque about b's centre) of all of them is
-// summed and handed to the engine-neutral PlasticJointDriver, which settles the law and plans the
-// rows. A joint that yields or breaks enables (wakes) its bodies; a broken joint's rows are disabled
-// for good, and it calls its break callback.
+// A plastic joint in ODE (0.16, double precision), driving ODE rows from the shared
+// PlasticJointLaw (adapters/common), as the Bullet adapter drives Bullet's: one joint of plascap's
+// own type (src/ode_plastic_rows.hpp, on ODE's joint object) with exactly the rows the dofs need,
+// all at the anchor: none for a free dof, a rigid row (unbounded, Baumgarte target at ERP
+// kHoldCorrection) for a rigid one, and for a plastic one the row the law commands (Hold: a rate
+// target within the force range [lower, upper], both capacities at once; Push: the spring force).
+// Rotations are measured as swing and twist (swing_twist.hpp), as plascap's Bullet constraint
+// measures them, so a dof means the same in both engines; their rows lie along the angles'
+// gradients. The joint's feedback (dJointFeedback, world frame, torque about b's centre) is handed
+// to the engine-neutral PlasticJointDriver, which settles the law and plans the rows. A joint that
+// yields or breaks enables (wakes) its bodies; a broken joint is disabled for good, and it calls
+// its break callback.
 //
 // Use OdePlasticJoints (ode_plastic_joints.hpp): one call per step for every joint of a world. By
 // hand: construct after the bodies; engage(now) when the joint takes hold (its positions then are
@@ -69,24 +62,12 @@ private:
     JointFrameState measure() const;
     std::optional<BodyVelocity> a_body_velocity() const;  // none when b is joined to the world
     void wake();
-    void set_rotation_rows(const JointFrameState& state, const PerDof<std::optional<RowCommand>>& commands, double dt);
-    void set_translation_rows(const JointFrameState& state, const PerDof<std::optional<RowCommand>>& commands, double dt);
-    void set_hinge_motor(const JointFrameState& state, const PerDof<std::optional<RowCommand>>& commands, double dt);
-    void hold_hinge_where_it_is(const JointFrameState& state);
-    void disable_rows();
 
     dWorldID world_;
     dBodyID a_, b_;
     Pose frame_on_a_, frame_on_b_;  // in a's and b's body coordinates (a = world: world coordinates)
-    dJointID rotations_ = nullptr;
-    dJointID hinge_ = nullptr;               // one rotation turns, the other five dofs rigid: the whole joint
-    std::optional<std::size_t> hinge_dof_;  // that rotation's dof
-    dJointID ball_ = nullptr;  // all translations rigid
-    dJointFeedback ball_feedback_{};
-    dJointGroupID translations_ = nullptr;
-    dJointFeedback rotation_feedback_{};
-    std::array<dJointFeedback, 2> translation_feedback_{};
-    int translation_joints_ = 0;
+    dJointID rows_ = nullptr;       // an OdePlasticRows, owned by ODE; destroyed with dJointDestroy
+    dJointFeedback feedback_{};
     PlasticJointDriver driver_;
     RowsWork rows_work_;
     std::optional<JointFrameState> measured_;  // after_step's state: the next before_step's start

@@ -1,0 +1,61 @@
+#pragma once
+// plascap's own ODE joint (ODE 0.16's joint object, ode_joint_object.hpp): exactly the rows a
+// plastic joint's dofs need, all at the anchor, in one joint — as ODE's own fixed joint has its six.
+// ODE's public joints could not do it: a bounded row at an anchor existed only as a contact joint's
+// friction row, so the adapter rebuilt two contact joints per joint per step (with two inert normal
+// rows) beside a ball joint or an AMotor whose axes it reset every step.
+//   translation dof i: J·v = axisᵢ·(v_b + ω_b × r_b − v_a − ω_a × r_a), r = anchor − centre: the
+//     rate of b's anchor relative to a's along the axis, so the row's force acts at the anchor;
+//   rotation dof i: J·v = gᵢ·(ω_b − ω_a), gᵢ the angle's gradient (swing_twist.hpp): the angle's
+//     exact rate, and the row's force its generalised force.
+// Each row has its own target rate and force range [lower, upper] (±dInfinity: a rigid row). ODE
+// fills the joint's dJointFeedback from the rows' forces, as for its own joints.
+#include <ode/ode.h>
+
+#include <array>
+#include <cstdint>
+#include <optional>
+
+#include "ode_joint_object.hpp"
+#include "plascap/adapters/joint_frame.hpp"
+
+namespace plascap {
+
+// One dof's row for the next step: J·v driven to `rate` with a force in [lower, upper] on b.
+struct OdeRowTarget {
+    double rate = 0.0;    // [m/s | rad/s]
+    double lower = 0.0;   // [N | N·m], ≤ 0
+    double upper = 0.0;   // ≥ 0
+};
+
+class OdePlasticRows final : public dxJoint {
+public:
+    // A joint of `world` holding b to a (0: the world), with no rows until set_rows. ODE owns it:
+    // dJointDestroy(joint) frees it.
+    static OdePlasticRows* create(dWorldID world, dBodyID b, dBodyID a);
+
+    // The rows of the next step, for the joint as measured now (state's anchor is b's); no row for
+    // a dof without a target.
+    void set_rows(const JointFrameState& state, const PerDof<std::optional<OdeRowTarget>>& targets);
+
+    void getInfo1(Info1* info) override;
+    void getInfo2(dReal worldFPS, dReal worldERP, int rowskip, dReal* J1, dReal* J2, int pairskip, dReal* pairRhsCfm,
+                  dReal* pairLoHi, int* findex) override;
+    void getSureMaxInfo(SureMaxInfo* info) override;
+    dJointType type() const override { return dJointTypeNull; }  // no ODE type; ODE's setters refuse it
+    std::size_t size() const override { return sizeof(OdePlasticRows); }
+
+private:
+    explicit OdePlasticRows(dWorldID world) : dxJoint(world) {}
+
+    struct Row {
+        dReal on_b[6];  // J on b (first body): linear, angular
+        dReal on_a[6];  // J on a (second body)
+        dReal rate, lower, upper;
+    };
+    std::array<Row, 6> rows_{};
+    std::uint8_t count_ = 0;
+    bool all_unbounded_ = false;
+};
+
+}  // namespace plascap

@@ -1,0 +1,99 @@
+// plascap's ODE joint (adapters/ode/src/ode_plastic_rows.hpp) is an object of ODE 0.16's joint
+// class, whose layout plascap declares itself (ode_joint_object.hpp) because ODE installs no header
+// for it. These tests check that declaration against the ODE library the build links: if a
+// different ODE lays its joints out otherwise, they fail here rather than the engine corrupting
+// memory. The rows themselves are checked by the analytic tests of every engine
+// (test_plastic_joint_engines.cpp and others).
+#include <gtest/gtest.h>
+
+#include "../adapters/ode/src/ode_plastic_rows.hpp"
+
+namespace plascap {
+namespace {
+
+struct OdeWorld {
+    OdeWorld() {
+        dInitODE();
+        world = dWorldCreate();
+        a = dBodyCreate(world);
+        b = dBodyCreate(world);
+    }
+    ~OdeWorld() {
+        dWorldDestroy(world);
+        dCloseODE();
+    }
+    dWorldID world;
+    dBodyID a, b;
+};
+
+TEST(OdeJointObject, HasTheSizeOfOdesOwnNullJoint) {
+    OdeWorld w;
+    // ODE's null joint adds no member to the joint class; size() is read through the virtual
+    // function table as plascap declares it, which checks that slot too.
+    dJointID null_joint = dJointCreateNull(w.world, nullptr);
+    EXPECT_EQ(null_joint->size(), sizeof(dxJoint));
+    EXPECT_EQ(null_joint->type(), dJointTypeNull);
+    dJointDestroy(null_joint);
+}
+
+TEST(OdeJointObject, ReadsWhereOdeKeepsAJointsWorldBodiesAndFeedback) {
+    OdeWorld w;
+    dJointFeedback feedback{};
+    dJointID fixed = dJointCreateFixed(w.world, nullptr);  // made by ODE, read through plascap's layout
+    dJointAttach(fixed, w.b, w.a);
+    dJointSetFeedback(fixed, &feedback);
+    EXPECT_EQ(fixed->world, w.world);
+    EXPECT_EQ(fixed->node[0].body, w.b);
+    EXPECT_EQ(fixed->node[1].body, w.a);
+    EXPECT_EQ(fixed->node[0].joint, fixed);
+    EXPECT_EQ(fixed->feedback, &feedback);
+    EXPECT_EQ(fixed->type(), dJointTypeFixed);
+    dJointDisable(fixed);
+    EXPECT_FALSE(fixed->isEnabled());
+    dJointDestroy(fixed);
+}
+
+TEST(OdeJointObject, PlascapsJointIsOneOfTheWorldsJoints) {
+    OdeWorld w;
+    OdePlasticRows* rows = OdePlasticRows::create(w.world, w.b, w.a);
+    dJointFeedback feedback{};
+    dJointSetFeedback(rows, &feedback);
+    // ODE's public API sees it as a joint of the world between b and a.
+    EXPECT_EQ(dJointGetBody(rows, 0), w.b);
+    EXPECT_EQ(dJointGetBody(rows, 1), w.a);
+    EXPECT_EQ(dJointGetType(rows), dJointTypeNull);
+    EXPECT_TRUE(dAreConnected(w.a, w.b));
+    EXPECT_EQ(dBodyGetNumJoints(w.b), 1);
+    EXPECT_EQ(dJointGetFeedback(rows), &feedback);
+    dJointDestroy(rows);  // ODE frees it with plascap's destructor
+    EXPECT_FALSE(dAreConnected(w.a, w.b));
+}
+
+// One rigid translation row along x, b joined to the world, pushed along x by a force: the row
+// holds b and its feedback carries the force back, as ODE's own joints' do.
+TEST(OdeJointObject, ARowHoldsItsBodyAndReportsItsForce) {
+    OdeWorld w;
+    dMass m;
+    dMassSetBoxTotal(&m, 2.0, 1.0, 1.0, 1.0);
+    dBodySetMass(w.b, &m);
+    dWorldSetGravity(w.world, 0.0, 0.0, 0.0);
+    OdePlasticRows* rows = OdePlasticRows::create(w.world, w.b, nullptr);
+    dJointFeedback feedback{};
+    dJointSetFeedback(rows, &feedback);
+    JointFrameState state;
+    state.axes.anchor = {0.0, 0.0, 0.0};
+    state.axes.translation = {Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1}};
+    PerDof<std::optional<OdeRowTarget>> targets;
+    targets[0] = OdeRowTarget{0.0, -dInfinity, dInfinity};
+    rows->set_rows(state, targets);
+    dBodyAddForce(w.b, 10.0, 4.0, 0.0);  // [N]
+    dWorldStep(w.world, 0.01);
+    const dReal* v = dBodyGetLinearVel(w.b);
+    EXPECT_NEAR(v[0], 0.0, 1e-9);             // held along x
+    EXPECT_NEAR(v[1], 4.0 / 2.0 * 0.01, 1e-9);  // free along y: F·dt/m
+    EXPECT_NEAR(feedback.f1[0], -10.0, 1e-6);    // the row's force on b
+    EXPECT_NEAR(feedback.f1[1], 0.0, 1e-9);
+}
+
+}  // namespace
+}  // namespace plascap
