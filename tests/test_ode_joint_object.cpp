@@ -6,7 +6,10 @@
 // (test_plastic_joint_engines.cpp and others).
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include "../adapters/ode/src/ode_plastic_rows.hpp"
+#include "plascap/adapters/ode_plastic_joint.hpp"
 
 namespace plascap {
 namespace {
@@ -93,6 +96,51 @@ TEST(OdeJointObject, ARowHoldsItsBodyAndReportsItsForce) {
     EXPECT_NEAR(v[1], 4.0 / 2.0 * 0.01, 1e-9);  // free along y: F·dt/m
     EXPECT_NEAR(feedback.f1[0], -10.0, 1e-6);    // the row's force on b
     EXPECT_NEAR(feedback.f1[1], 0.0, 1e-9);
+}
+
+// What the ODE joint's rows now carry: both capacities as the two bounds of a Hold row (as plascap's
+// Bullet constraint, tests/test_bullet_plastic_constraint.cpp), where the AMotor and contact rows it
+// replaced had one symmetric bound, that of the side last loaded. A 10 kg block without gravity
+// hangs from the world at its top; N is rigid-plastic with 1,000 N in tension (the dof's negative
+// side: pulling the block down moves b's anchor along −y) and 3,000 N in compression; every other
+// dof is rigid. Phases of (force along −y on the block [N], steps of 1/240 s).
+double axial_plastic_after_on_ode(const std::vector<std::pair<double, int>>& phases) {
+    OdeWorld w;
+    dWorldSetGravity(w.world, 0.0, 0.0, 0.0);
+    dMass m;
+    dMassSetBoxTotal(&m, 10.0, 0.2, 1.0, 0.2);
+    dBodySetMass(w.b, &m);
+    dBodySetPosition(w.b, 0.0, -0.5, 0.0);
+    PlasticJointSettings s;
+    s.modes.fill(DofMode::Rigid);
+    s.modes[index(Dof::N)] = DofMode::Plastic;
+    s.laws[index(Dof::N)] = {3000.0, 1000.0, std::nullopt};
+    OdePlasticJoint joint(w.world, nullptr, w.b, Pose{}, s);
+    const double dt = 1.0 / 240;
+    joint.engage(0.0);
+    for (const auto& [force, steps] : phases) {
+        for (int i = 0; i < steps; ++i) {
+            dBodyAddForce(w.b, 0.0, -force, 0.0);
+            joint.before_step(dt);
+            dWorldStep(w.world, dt);
+            joint.after_step(dt);
+        }
+    }
+    return joint.law().plastic_displacement();
+}
+
+TEST(OdePlasticRows, LoadReversalMeetsTheCapacityOfItsOwnSideFromItsFirstStep) {
+    // 800 N of tension, then 2,500 N of compression: both below their side's capacity, nothing flows.
+    EXPECT_LT(axial_plastic_after_on_ode({{800.0, 120}, {-2500.0, 120}}), 1e-9);
+}
+
+TEST(OdePlasticRows, CompressionPastItsCapacityFlowsAtThatCapacity) {
+    // 3,300 N against N_neg = 3,000 N after 800 N of tension: the block accelerates at 300 N / 10 kg,
+    // so after n steps of h (semi-implicit Euler) it has moved a·h²·n(n+1)/2.
+    const int n = 120;
+    const double a = (3300.0 - 3000.0) / 10.0, h = 1.0 / 240;
+    const double expected = a * h * h * n * (n + 1) / 2;
+    EXPECT_NEAR(axial_plastic_after_on_ode({{800.0, 60}, {-3300.0, n}}), expected, 0.01 * expected);
 }
 
 }  // namespace
