@@ -23,32 +23,16 @@ OdePlasticRows* OdePlasticRows::create(dWorldID world, dBodyID b, dBodyID a) {
 void OdePlasticRows::set_rows(const JointFrameState& state, const PerDof<std::optional<OdeRowTarget>>& targets) {
     dxBody* b = node[0].body;  // ODE's first body
     dxBody* a = node[1].body;  // 0: the world
-    const Vec3 lever_b = difference(state.axes.anchor, centre_of(b));
-    const Vec3 lever_a = a ? difference(state.axes.anchor, centre_of(a)) : Vec3{};
+    axes_ = state.axes;
+    lever_b_ = difference(state.axes.anchor, centre_of(b));
+    lever_a_ = a ? difference(state.axes.anchor, centre_of(a)) : Vec3{};
+    targets_ = targets;
     count_ = 0;
     all_unbounded_ = true;
-    for (std::size_t i = 0; i < targets.size(); ++i) {
-        if (!targets[i]) continue;
-        Row& row = rows_[count_++];
-        // +J on b, −J on a (plascap's Bullet constraint writes the same rows).
-        if (i < 3) {
-            const Vec3& axis = state.axes.translation[i];
-            store(row.on_b, axis);
-            store(row.on_b + 3, cross(lever_b, axis));
-            store(row.on_a, {-axis[0], -axis[1], -axis[2]});
-            const Vec3 moment_a = cross(lever_a, axis);
-            store(row.on_a + 3, {-moment_a[0], -moment_a[1], -moment_a[2]});
-        } else {
-            const Vec3& gradient = state.axes.rotation[i - 3];
-            store(row.on_b, {});
-            store(row.on_b + 3, gradient);
-            store(row.on_a, {});
-            store(row.on_a + 3, {-gradient[0], -gradient[1], -gradient[2]});
-        }
-        row.rate = targets[i]->rate;
-        row.lower = targets[i]->lower;
-        row.upper = targets[i]->upper;
-        all_unbounded_ = all_unbounded_ && row.lower == -dInfinity && row.upper == dInfinity;
+    for (const std::optional<OdeRowTarget>& t : targets) {
+        if (!t) continue;
+        ++count_;
+        all_unbounded_ = all_unbounded_ && t->lower == -dInfinity && t->upper == dInfinity;
     }
 }
 
@@ -62,21 +46,31 @@ void OdePlasticRows::getSureMaxInfo(SureMaxInfo* info) { info->max_m = 6; }
 void OdePlasticRows::getInfo2(dReal, dReal, int rowskip, dReal* J1, dReal* J2, int pairskip, dReal* pairRhsCfm,
                               dReal* pairLoHi, int*) {
     using namespace ode_joint_object;
-    for (int r = 0; r < count_; ++r) {
-        const Row& row = rows_[static_cast<std::size_t>(r)];
-        for (int k = 0; k < 3; ++k) {
-            J1[r * rowskip + dDA_LX + k] = row.on_b[k];
-            J1[r * rowskip + dDA_AX + k] = row.on_b[3 + k];
-        }
-        if (J2) {
-            for (int k = 0; k < 3; ++k) {
-                J2[r * rowskip + dDA_LX + k] = row.on_a[k];
-                J2[r * rowskip + dDA_AX + k] = row.on_a[3 + k];
+    int r = 0;
+    for (std::size_t i = 0; i < targets_.size(); ++i) {
+        if (!targets_[i]) continue;
+        dReal* on_b = J1 + r * rowskip;
+        dReal* on_a = J2 ? J2 + r * rowskip : nullptr;  // ODE zeroed both
+        // +J on b, −J on a (plascap's Bullet constraint writes the same rows).
+        if (i < 3) {
+            const Vec3& axis = axes_.translation[i];
+            const Vec3 moment_b = cross(lever_b_, axis);
+            store(on_b + dDA_LX, axis);
+            store(on_b + dDA_AX, moment_b);
+            if (on_a) {
+                const Vec3 moment_a = cross(lever_a_, axis);
+                store(on_a + dDA_LX, {-axis[0], -axis[1], -axis[2]});
+                store(on_a + dDA_AX, {-moment_a[0], -moment_a[1], -moment_a[2]});
             }
+        } else {
+            const Vec3& gradient = axes_.rotation[i - 3];
+            store(on_b + dDA_AX, gradient);
+            if (on_a) store(on_a + dDA_AX, {-gradient[0], -gradient[1], -gradient[2]});
         }
-        pairRhsCfm[r * pairskip + kRhs] = row.rate;
-        pairLoHi[r * pairskip + kLo] = row.lower;
-        pairLoHi[r * pairskip + kHi] = row.upper;
+        pairRhsCfm[r * pairskip + kRhs] = targets_[i]->rate;
+        pairLoHi[r * pairskip + kLo] = targets_[i]->lower;
+        pairLoHi[r * pairskip + kHi] = targets_[i]->upper;
+        ++r;
     }
 }
 

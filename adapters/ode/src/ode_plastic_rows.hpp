@@ -48,12 +48,10 @@ public:
 private:
     explicit OdePlasticRows(dWorldID world) : dxJoint(world) {}
 
-    struct Row {
-        dReal on_b[6];  // J on b (first body): linear, angular
-        dReal on_a[6];  // J on a (second body)
-        dReal rate, lower, upper;
-    };
-    std::array<Row, 6> rows_{};
+    // The rows of the next step: the joint's axes and levers as measured, and each dof's target.
+    JointAxesInWorld axes_{};
+    Vec3 lever_b_{}, lever_a_{};  // anchor − centre of b, of a [m]
+    PerDof<std::optional<OdeRowTarget>> targets_{};
     std::uint8_t count_ = 0;
     bool all_unbounded_ = false;
 };
