@@ -22,8 +22,8 @@ struct JointAxesInWorld {
 
 // Generalised forces on b per dof: the components of F along the translation axes, and of the
 // moment about the anchor, T − r × F with r = anchor − centre of mass (moment transfer; any statics
-// text, e.g. Meriam & Kraige §2/6), along the rotation axes. Euler-angle rows (Bullet's Spring2,
-// ODE's AMotor) have rotation axes that are not orthogonal once the joint has turned, so the moment
+// text, e.g. Meriam & Kraige §2/6), along the rotation axes. Euler-angle rows (Bullet's Spring2) and
+// swing-twist gradient rows have rotation axes that are not orthogonal once the joint has turned, so the moment
 // is decomposed in their basis (a 3×3 solve), which gives each row's own moment exactly; a
 // degenerate basis (gimbal lock) falls back to projections.
 PerDof<double> joint_frame_loads(const WorldLoad& load, const Vec3& centre_of_mass, const JointAxesInWorld& axes);

@@ -1,9 +1,8 @@
 #pragma once
 // What an engine's joint rows measure and can carry, which the law must know to plan them and to
 // book their work. Bullet's 6-dof springs measure rotations as Euler angles and bound a motor row
-// symmetrically; ODE's AMotor rows (ode_plastic_joint.hpp) measure swing and twist with one
-// symmetric bound; plascap's own Bullet constraint (bullet_plastic_constraint.hpp) measures swing
-// and twist and bounds each row by both capacities.
+// symmetrically; plascap's own Bullet constraint (bullet_plastic_constraint.hpp) and its own ODE
+// joint (ode_plastic_rows.hpp) measure swing and twist and bound each row by both capacities.
 namespace plascap {
 
 enum class RotationMeasure {
