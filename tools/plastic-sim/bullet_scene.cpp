@@ -33,6 +33,7 @@ public:
         // scanning all of them, O(n²) per step (docs/adapters.md, "Cost"); the islands do not
         // interact, so one solve gives them the same rows.
         world_.world().getSimulationIslandManager()->setSplitIslands(false);
+        world_.count_contact_work();  // the ledger's contacts (energy_ledger.hpp)
         for (const SceneBody& b : scene.bodies) {
             const btQuaternion q(b.orientation[1], b.orientation[2], b.orientation[3], b.orientation[0]);
             const btVector3 inertia = b.inertia ? bt(*b.inertia) : btVector3(0, 0, 0);

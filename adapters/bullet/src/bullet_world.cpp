@@ -32,9 +32,9 @@ BulletWorld::BulletWorld(const btVector3& gravity, int iterations, BulletSolverK
 BulletWorld::~BulletWorld() = default;
 
 void BulletWorld::step(double dt) {
-    note_step_start();
+    if (counting_contacts_) note_step_start();
     world_->stepSimulation(dt, 0, dt);
-    contact_work_ += contact_work_of_step();
+    if (counting_contacts_) contact_work_ += contact_work_of_step();
 }
 
 namespace {

@@ -31,9 +31,12 @@ public:
     // The work of the split-impulse position corrections so far (BulletPlasticSolver::correction_work;
     // 0 with Bullet's own solver) [J].
     double correction_work() const { return plascap_solver_ ? plascap_solver_->correction_work() : 0.0; }
-    // The work the contacts' impulses (normal and friction) did on the bodies, summed over the steps so
-    // far [J]: negative where impacts and friction took energy (impulse_work.hpp). Split-impulse pushes
-    // out of a deep penetration move bodies without a velocity and are not in it.
+    // From the next step on, count the work the contacts' impulses (normal and friction) do on the
+    // bodies: contact_work(), summed over the steps counted [J], negative where impacts and friction
+    // took energy (impulse_work.hpp). Split-impulse pushes out of a deep penetration move bodies
+    // without a velocity and are not in it. Off by default: it records every body's velocities at
+    // each step's start, O(bodies) a step.
+    void count_contact_work() { counting_contacts_ = true; }
     double contact_work() const { return contact_work_; }
     // One fixed step of dt seconds (no interpolation sub-steps).
     void step(double dt);
@@ -48,6 +51,7 @@ private:
     double contact_work_of_step() const;
 
     std::vector<BodyStart> start_;
+    bool counting_contacts_ = false;
     double contact_work_ = 0.0;
     std::unique_ptr<btDefaultCollisionConfiguration> configuration_;
     std::unique_ptr<btCollisionDispatcher> dispatcher_;
