@@ -65,10 +65,10 @@ std::optional<OdeRowTarget> row_target(DofMode mode, const std::optional<RowComm
 
 OdePlasticJoint::OdePlasticJoint(dWorldID world, dBodyID a, dBodyID b, const Pose& frame_in_world,
                                  const PlasticJointSettings& settings)
-    : world_(world), a_(a), b_(b), driver_(settings, kOdeRows) {
+    : a_(a), b_(b), driver_(settings, kOdeRows) {
     frame_on_a_ = a ? relative(pose_of(a), frame_in_world) : frame_in_world;
     frame_on_b_ = relative(pose_of(b), frame_in_world);
-    rows_ = OdePlasticRows::create(world_, b_, a_);
+    rows_ = OdePlasticRows::create(world, b_, a_);
     dJointSetFeedback(rows_, &feedback_);
 }
 
@@ -100,7 +100,7 @@ void OdePlasticJoint::before_step(double dt) {
         targets[i] = row_target(driver_.law().mode(kAllDofs[i]), commands[i], state.positions[i],
                                 driver_.engaged_positions()[i], dt);
     }
-    static_cast<OdePlasticRows*>(rows_)->set_rows(state, targets);
+    rows_->set_rows(state, targets);
 }
 
 void OdePlasticJoint::wake() {

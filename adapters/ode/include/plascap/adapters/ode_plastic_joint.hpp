@@ -18,7 +18,6 @@
 // after_step(dt) after it.
 #include <ode/ode.h>
 
-#include <array>
 #include <optional>
 #include <utility>
 
@@ -27,6 +26,8 @@
 #include "plascap/adapters/rows_work.hpp"
 
 namespace plascap {
+
+class OdePlasticRows;  // plascap's ODE joint (src/ode_plastic_rows.hpp)
 
 class OdePlasticJoint {
 public:
@@ -63,10 +64,9 @@ private:
     std::optional<BodyVelocity> a_body_velocity() const;  // none when b is joined to the world
     void wake();
 
-    dWorldID world_;
     dBodyID a_, b_;
     Pose frame_on_a_, frame_on_b_;  // in a's and b's body coordinates (a = world: world coordinates)
-    dJointID rows_ = nullptr;       // an OdePlasticRows, owned by ODE; destroyed with dJointDestroy
+    OdePlasticRows* rows_ = nullptr;  // owned by ODE: destroyed with dJointDestroy
     dJointFeedback feedback_{};
     PlasticJointDriver driver_;
     RowsWork rows_work_;
