@@ -1,14 +1,14 @@
 // The ODE adapter's cost (issue 16): one dWorldQuickStep with n plastic joints against the same
 // scene with n dJointTypeFixed, timed interleaved with it (counter vs_rigid; goal ≤ 1.3 for hinges and
 // for all six dofs plastic), and the cost per joint from 100 to 10,000 joints (ns_per_joint). PlasticAxis:
-// one plastic rotation, the adapter's ODE hinge joint.
+// one plastic rotation, five rigid dofs.
 // Run: build/bench/bench_ode_joints (docs/adapters.md, "Cost").
 #include <benchmark/benchmark.h>
 
 #include <memory>
 #include <vector>
 
-#include "plascap/adapters/ode_plastic_joint.hpp"
+#include "plascap/adapters/ode_plastic_joints.hpp"
 #include "joint_yield_settings.hpp"
 #include "vs_rigid.hpp"
 
@@ -59,27 +59,22 @@ void Fixed(benchmark::State& state) {
 }
 BENCHMARK(Fixed)->ArgName("joints")->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
 
-// One plastic joint per box with `settings`; times the steps, the adapter's before_step and after_step included.
+// One plastic joint per box with `settings`, stepped as a user steps them: OdePlasticJoints::step,
+// which plans every joint's rows, steps the world and settles every joint (loading each joint's state
+// a few joints ahead: prefetch.hpp).
 void step_with_joints(benchmark::State& state, int n, const plascap::PlasticJointSettings& settings) {
     HangingBoxes rigid(n);
     fix_all(rigid);
     HangingBoxes scene(n);
-    std::vector<std::unique_ptr<plascap::OdePlasticJoint>> joints;
-    for (int i = 0; i < n; ++i) {
-        joints.push_back(std::make_unique<plascap::OdePlasticJoint>(scene.world, nullptr, scene.boxes[i], scene.anchor(i), settings));
-        joints.back()->engage(0.0);
-    }
-    bench::time_steps(state, [&] {
-        for (auto& j : joints) j->before_step(kDt);
-        dWorldQuickStep(scene.world, kDt);
-        for (auto& j : joints) j->after_step(kDt);
-    }, [&] { dWorldQuickStep(rigid.world, kDt); }, n);
-    joints.clear();
+    auto joints = std::make_unique<plascap::OdePlasticJoints>(scene.world);
+    for (int i = 0; i < n; ++i) joints->add(nullptr, scene.boxes[i], scene.anchor(i), settings);
+    bench::time_steps(state, [&] { joints->step(kDt); }, [&] { dWorldQuickStep(rigid.world, kDt); }, n);
+    joints.reset();  // before the world goes
 }
 
 // Capacities well above the load; elastic = 1 gives every plastic dof a stiffness (explicit spring
 // rows: 5,000 N/m, a 2 cm sag, and 100 N·m/rad, as bench_bullet_joints); six = 1: all six dofs
-// plastic, 0: translations rigid (a plastic hinge). Includes the adapter's before_step and after_step.
+// plastic, 0: translations rigid (a plastic hinge). Includes the adapter's planning and settling.
 void PlasticJoints(benchmark::State& state) {
     plascap::PlasticJointSettings settings;
     for (plascap::Dof dof : plascap::kAllDofs) {
@@ -95,9 +90,8 @@ BENCHMARK(PlasticJoints)
     ->ArgsProduct({{0, 1}, {0, 1}, {100, 1000, 10000}})
     ->Unit(benchmark::kMicrosecond);
 
-// A one-axis plastic hinge: Mz plastic, the other five dofs rigid, which the adapter makes one ODE
-// hinge joint whose motor row is the dof's (six rows in one joint, as a fixed joint); elastic = 1
-// gives Mz a stiffness of 100 N·m/rad. The hanging box's weight puts no moment on it.
+// A one-axis plastic hinge: Mz plastic, the other five dofs rigid: six rows in one joint, as a
+// fixed joint has; elastic = 1 gives Mz a stiffness of 100 N·m/rad. The hanging box's weight puts no moment on it.
 void PlasticAxis(benchmark::State& state) {
     plascap::PlasticJointSettings settings;
     for (plascap::Dof dof : plascap::kAllDofs) {

@@ -20,6 +20,7 @@
 #endif
 #ifdef PLASCAP_HAVE_ODE
 #include "plascap/adapters/ode_plastic_joints.hpp"
+#include "plascap/adapters/prefetch.hpp"
 #endif
 
 namespace plascap {
@@ -178,6 +179,26 @@ TEST(OdeLifecycle, OneCallPerStepRunsTheWholeCycle) {
         EXPECT_NEAR(dBodyGetPosition(block)[1], expected, 1e-9);
         EXPECT_NEAR(joints.time(), 35 * kDt, 1e-12);
     }
+}
+
+// A group whose joints' state passes kPrefetchFromBytes loads each joint a few places ahead
+// (prefetch.hpp): a hint that must change nothing. Every block of such a group flows as the
+// oscillator says, the last ones (past the last joint loaded ahead) as the first.
+TEST(OdeLifecycle, AGroupThatLoadsItsJointsAheadFlowsAsTheOscillatorSays) {
+    OdeWorld ode;
+    const std::size_t count = kPrefetchFromBytes / OdePlasticJoint::state_bytes() + kPrefetchAhead + 2;
+    OdePlasticJoints joints(ode.world);
+    std::vector<dBodyID> blocks;
+    for (std::size_t i = 0; i < count; ++i) {
+        blocks.push_back(ode.box(-0.5));
+        dBodySetPosition(blocks.back(), 2.0 * static_cast<double>(i), -0.5, 0);
+        joints.add(nullptr, blocks.back(), Pose{{2.0 * static_cast<double>(i), 0, 0}}, axial(18.0));
+    }
+    ASSERT_GT(count * OdePlasticJoint::state_bytes(), kPrefetchFromBytes);
+    const int steps = 10;
+    for (int i = 0; i < steps; ++i) joints.step(kDt, OdePlasticJoints::Stepper::Exact);
+    for (std::size_t i = 0; i < count; ++i)
+        ASSERT_NEAR(dBodyGetPosition(blocks[i])[1], -0.5 - drop_after(steps, 18.0), 1e-9) << "block " << i;
 }
 
 // Two free bodies (no gravity) pulled apart by their speeds, joined on a joint that breaks after

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "plascap/adapters/joint_loads.hpp"
+#include "plascap/adapters/prefetch.hpp"
 #include "plascap/adapters/row_effective_mass.hpp"
 #include "plascap/adapters/swing_twist.hpp"
 #include "ode_body_velocity.hpp"
@@ -102,6 +103,13 @@ void OdePlasticJoint::before_step(double dt) {
     }
     rows_->set_rows(state, targets);
 }
+
+void OdePlasticJoint::prefetch() const {
+    prefetch_object(this);
+    prefetch_object(rows_);
+}
+
+std::size_t OdePlasticJoint::state_bytes() { return sizeof(OdePlasticJoint) + sizeof(OdePlasticRows); }
 
 void OdePlasticJoint::wake() {
     dBodyEnable(b_);

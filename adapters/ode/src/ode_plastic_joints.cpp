@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "plascap/adapters/prefetch.hpp"
 #include "ode_body_velocity.hpp"
 
 namespace plascap {
@@ -11,11 +12,18 @@ OdePlasticJoint& OdePlasticJoints::add(dBodyID a, dBodyID b, const Pose& frame_i
                                        const PlasticJointSettings& settings, double takes_hold_at) {
     joints_.push_back({std::make_unique<OdePlasticJoint>(world_, a, b, frame_in_world, settings), takes_hold_at});
     if (a) joined_.insert(std::minmax(a, b));
+    prefetching_ = joints_.size() * OdePlasticJoint::state_bytes() > kPrefetchFromBytes;
     return *joints_.back().joint;
 }
 
+void OdePlasticJoints::prefetch_ahead_of(std::size_t i) const {
+    if (prefetching_ && i + kPrefetchAhead < joints_.size()) joints_[i + kPrefetchAhead].joint->prefetch();
+}
+
 void OdePlasticJoints::step(double dt, Stepper stepper) {
-    for (Entry& e : joints_) {
+    for (std::size_t i = 0; i < joints_.size(); ++i) {
+        prefetch_ahead_of(i);
+        Entry& e = joints_[i];
         // Due when the step starts within half a step of the time asked for (no drift from summing dt).
         if (!e.joint->engaged() && e.takes_hold_at < time_ + 0.5 * dt) e.joint->engage(time_);
         if (e.joint->engaged()) e.joint->before_step(dt);
@@ -28,7 +36,9 @@ void OdePlasticJoints::step(double dt, Stepper stepper) {
         dWorldStep(world_, dt);
     }
     book_contact_work(dt);
-    for (Entry& e : joints_) {
+    for (std::size_t i = 0; i < joints_.size(); ++i) {
+        prefetch_ahead_of(i);
+        Entry& e = joints_[i];
         if (!e.joint->engaged()) continue;
         if (e.joint->after_step(dt) == JointEvent::Broke && e.joint->body_a())
             joined_.erase(joined_.find(std::minmax(e.joint->body_a(), e.joint->body_b())));

@@ -41,6 +41,12 @@ public:
     void before_step(double dt);
     // What the step did to the joint (None once it is broken).
     JointEvent after_step(double dt);
+    // Asks the CPU to load the joint's state (this object and its ODE rows) for its coming turn
+    // (prefetch.hpp). A loop over many joints calls it kPrefetchAhead joints ahead; OdePlasticJoints
+    // does.
+    void prefetch() const;
+    // The bytes prefetch() loads [B].
+    static std::size_t state_bytes();
 
     const PlasticJointLaw& law() const { return driver_.law(); }
     PerDof<double> positions() const { return measure().positions; }
