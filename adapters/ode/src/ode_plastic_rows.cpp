@@ -1,5 +1,7 @@
 #include "ode_plastic_rows.hpp"
 
+#include "plascap/adapters/prefetch.hpp"
+
 namespace plascap {
 namespace {
 
@@ -43,9 +45,16 @@ void OdePlasticRows::getInfo1(Info1* info) {
 
 void OdePlasticRows::getSureMaxInfo(SureMaxInfo* info) { info->max_m = 6; }
 
+void OdePlasticRows::load_next_joint() const {
+    // `next` may be any of ODE's joints, and smaller than this one: lines past its end are loaded
+    // for nothing, and a prefetch never faults.
+    if (next) prefetch_bytes<sizeof(OdePlasticRows), Access::Read>(next);
+}
+
 void OdePlasticRows::getInfo2(dReal, dReal, int rowskip, dReal* J1, dReal* J2, int pairskip, dReal* pairRhsCfm,
                               dReal* pairLoHi, int*) {
     using namespace ode_joint_object;
+    load_next_joint();
     int r = 0;
     for (std::size_t i = 0; i < targets_.size(); ++i) {
         if (!targets_[i]) continue;

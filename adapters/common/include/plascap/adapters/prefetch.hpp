@@ -22,15 +22,24 @@ inline constexpr std::size_t kPrefetchFromBytes = std::size_t{4} << 20;
 
 inline constexpr std::size_t kCacheLine = 64;  // bytes, on x86-64 and ARMv8 cores
 
-// Loads the cache lines of `object` for reading and writing: one prefetch per line, unrolled (as a
+enum class Access { Read = 0, Write = 1 };  // __builtin_prefetch's second argument
+
+// Loads the cache lines of the `Bytes` bytes from `start`: one prefetch per line, unrolled (as a
 // loop, the count, the add and the branch tripled the instructions). GCC 12 dropped every prefetch
 // of a fold expression of 45 of them; this loop keeps them all.
+template <std::size_t Bytes, Access access>
+void prefetch_bytes(const void* start) {
+    constexpr std::size_t kLines = (Bytes + kCacheLine - 1) / kCacheLine;
+    const char* bytes = static_cast<const char*>(start);
+#pragma GCC unroll 128
+    for (std::size_t line = 0; line < kLines; ++line)
+        __builtin_prefetch(bytes + line * kCacheLine, static_cast<int>(access));
+}
+
+// Loads `object` for reading and writing.
 template <class T>
 void prefetch_object(const T* object) {
-    constexpr std::size_t kLines = (sizeof(T) + kCacheLine - 1) / kCacheLine;
-    const char* start = reinterpret_cast<const char*>(object);
-#pragma GCC unroll 128
-    for (std::size_t line = 0; line < kLines; ++line) __builtin_prefetch(start + line * kCacheLine, 1);
+    prefetch_bytes<sizeof(T), Access::Write>(object);
 }
 
 }  // namespace plascap
