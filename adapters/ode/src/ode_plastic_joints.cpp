@@ -12,15 +12,16 @@ OdePlasticJoint& OdePlasticJoints::add(dBodyID a, dBodyID b, const Pose& frame_i
                                        const PlasticJointSettings& settings, double takes_hold_at) {
     joints_.push_back({std::make_unique<OdePlasticJoint>(world_, a, b, frame_in_world, settings), takes_hold_at});
     if (a) joined_.insert(std::minmax(a, b));
-    prefetching_ = joints_.size() * OdePlasticJoint::state_bytes() > kPrefetchFromBytes;
     return *joints_.back().joint;
 }
 
-void OdePlasticJoints::prefetch_ahead_of(std::size_t i) const {
-    if (prefetching_ && i + kPrefetchAhead < joints_.size()) joints_[i + kPrefetchAhead].joint->prefetch();
-}
-
 void OdePlasticJoints::step(double dt, Stepper stepper) {
+    // Has the joint kPrefetchAhead places after i loaded while i computes, once the joints' state
+    // passes kPrefetchFromBytes (prefetch.hpp).
+    const bool loads_ahead = joints_.size() * OdePlasticJoint::state_bytes() > kPrefetchFromBytes;
+    const auto prefetch_ahead_of = [&](std::size_t i) {
+        if (loads_ahead && i + kPrefetchAhead < joints_.size()) joints_[i + kPrefetchAhead].joint->prefetch();
+    };
     for (std::size_t i = 0; i < joints_.size(); ++i) {
         prefetch_ahead_of(i);
         Entry& e = joints_[i];

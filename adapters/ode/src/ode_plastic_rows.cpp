@@ -48,7 +48,7 @@ void OdePlasticRows::getSureMaxInfo(SureMaxInfo* info) { info->max_m = 6; }
 void OdePlasticRows::load_next_joint() const {
     // `next` may be any of ODE's joints, and smaller than this one: lines past its end are loaded
     // for nothing, and a prefetch never faults.
-    if (next) prefetch_bytes<sizeof(OdePlasticRows), Access::Read>(next);
+    if (next) prefetch_bytes<sizeof(OdePlasticRows), PrefetchFor::Reading>(next);
 }
 
 void OdePlasticRows::getInfo2(dReal, dReal, int rowskip, dReal* J1, dReal* J2, int pairskip, dReal* pairRhsCfm,

@@ -22,24 +22,24 @@ inline constexpr std::size_t kPrefetchFromBytes = std::size_t{4} << 20;
 
 inline constexpr std::size_t kCacheLine = 64;  // bytes, on x86-64 and ARMv8 cores
 
-enum class Access { Read = 0, Write = 1 };  // __builtin_prefetch's second argument
+enum class PrefetchFor { Reading = 0, Writing = 1 };  // __builtin_prefetch's second argument
 
 // Loads the cache lines of the `Bytes` bytes from `start`: one prefetch per line, unrolled (as a
 // loop, the count, the add and the branch tripled the instructions). GCC 12 dropped every prefetch
 // of a fold expression of 45 of them; this loop keeps them all.
-template <std::size_t Bytes, Access access>
+template <std::size_t Bytes, PrefetchFor use>
 void prefetch_bytes(const void* start) {
     constexpr std::size_t kLines = (Bytes + kCacheLine - 1) / kCacheLine;
     const char* bytes = static_cast<const char*>(start);
 #pragma GCC unroll 128
     for (std::size_t line = 0; line < kLines; ++line)
-        __builtin_prefetch(bytes + line * kCacheLine, static_cast<int>(access));
+        __builtin_prefetch(bytes + line * kCacheLine, static_cast<int>(use));
 }
 
 // Loads `object` for reading and writing.
 template <class T>
 void prefetch_object(const T* object) {
-    prefetch_bytes<sizeof(T), Access::Write>(object);
+    prefetch_bytes<sizeof(T), PrefetchFor::Writing>(object);
 }
 
 }  // namespace plascap

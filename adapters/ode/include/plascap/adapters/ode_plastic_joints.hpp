@@ -73,9 +73,6 @@ private:
         dJointFeedback feedback;
     };
     struct Collision;
-    // Has the joint kPrefetchAhead places after i loaded while i computes, once the joints' state
-    // passes kPrefetchFromBytes (prefetch.hpp).
-    void prefetch_ahead_of(std::size_t i) const;
     static void near_callback(void* data, dGeomID g1, dGeomID g2);
     // Makes a contact joint and has it report its forces into contacts_.
     void attach_contact(dJointGroupID group, const dContact& contact, dBodyID b1, dBodyID b2);
@@ -83,7 +80,6 @@ private:
 
     dWorldID world_;
     std::vector<Entry> joints_;
-    bool prefetching_ = false;  // the joints' state is past kPrefetchFromBytes
     std::multiset<std::pair<dBodyID, dBodyID>> joined_;  // intact joints' body pairs, ordered
     std::deque<Contact> contacts_;  // those collide() made for the coming step
     double contact_work_ = 0.0;
