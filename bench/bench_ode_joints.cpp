@@ -42,11 +42,13 @@ struct HangingBoxes {
     }
 };
 
-void fix_all(HangingBoxes& scene) {
-    for (dBodyID b : scene.boxes) {
+// `feedback`, if given: one per box, for ODE to report each joint's forces in.
+void fix_all(HangingBoxes& scene, dJointFeedback* feedback = nullptr) {
+    for (std::size_t i = 0; i < scene.boxes.size(); ++i) {
         dJointID j = dJointCreateFixed(scene.world, nullptr);
-        dJointAttach(j, b, nullptr);
+        dJointAttach(j, scene.boxes[i], nullptr);
         dJointSetFixed(j);
+        if (feedback) dJointSetFeedback(j, &feedback[i]);
     }
 }
 
@@ -58,6 +60,21 @@ void Fixed(benchmark::State& state) {
     bench::time_baseline(state, [&] { dWorldQuickStep(scene.world, kDt); }, n);
 }
 BENCHMARK(Fixed)->ArgName("joints")->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
+
+// ODE's fixed joints again, each with a dJointFeedback, as any joint whose forces a program reads:
+// what ODE's reporting of the forces alone costs (QuickStep keeps a copy of those joints' Jacobians
+// and sums each row's force into the feedback after the solve). plascap's rows read their forces
+// this way, so this is a floor under their vs_rigid that no change in plascap can lower.
+void FixedWithFeedback(benchmark::State& state) {
+    const int n = static_cast<int>(state.range(0));
+    HangingBoxes rigid(n);
+    fix_all(rigid);
+    HangingBoxes scene(n);
+    std::vector<dJointFeedback> feedback(static_cast<std::size_t>(n));
+    fix_all(scene, feedback.data());
+    bench::time_steps(state, [&] { dWorldQuickStep(scene.world, kDt); }, [&] { dWorldQuickStep(rigid.world, kDt); }, n);
+}
+BENCHMARK(FixedWithFeedback)->ArgName("joints")->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
 
 // One plastic joint per box with `settings`, stepped as a user steps them: OdePlasticJoints::step,
 // which plans every joint's rows, steps the world and settles every joint (loading each joint's state
