@@ -13,7 +13,8 @@ constexpr double kSmallSwing = 1e-2;
 
 SwingTwist swing_twist(const Mat3& r) {
     const Vec3 b_y = {r[0][1], r[1][1], r[2][1]}, b_x = {r[0][0], r[1][0], r[2][0]};
-    const double sin_swing = std::hypot(b_y[0], b_y[2]), cos_swing = b_y[1];
+    // b_y is a unit vector: its x–z part cannot overflow, and needs no std::hypot.
+    const double sin_swing = std::sqrt(b_y[0] * b_y[0] + b_y[2] * b_y[2]), cos_swing = b_y[1];
     const double swing = std::atan2(sin_swing, cos_swing);
     // n = y × b_y / |y × b_y|, the swing axis (any axis in x–z when there is no swing).
     const Vec3 n = sin_swing > 0.0 ? Vec3{b_y[2] / sin_swing, 0.0, -b_y[0] / sin_swing} : Vec3{1.0, 0.0, 0.0};
@@ -28,7 +29,9 @@ SwingTwist swing_twist(const Mat3& r) {
 
     const double s2 = swing * swing;
     const double h = swing < kSmallSwing ? 1.0 / 3.0 + s2 / 45.0 : (1.0 - swing * cos_swing / sin_swing) / s2;
-    const double t = swing < kSmallSwing ? 0.5 + s2 / 24.0 : std::tan(0.5 * swing) / swing;
+    // tan(σ/2) = (1 − cos σ) / sin σ (the half-angle identity), from the sine and cosine at hand; this
+    // form keeps its digits as σ → π (where 1 + cos σ would cancel), and below kSmallSwing the series serves.
+    const double t = swing < kSmallSwing ? 0.5 + s2 / 24.0 : (1.0 - cos_swing) / (sin_swing * swing);
     st.gradients = {{{1.0 - h * phi_z * phi_z, phi_z, h * phi_x * phi_z},
                      {-t * phi_z, 1.0, t * phi_x},
                      {h * phi_x * phi_z, -phi_x, 1.0 - h * phi_x * phi_x}}};
