@@ -104,10 +104,9 @@ void OdePlasticJoint::before_step(double dt) {
     rows_->set_rows(state, targets);
 }
 
-void OdePlasticJoint::prefetch() const {
-    prefetch_object(this);
-    prefetch_object(rows_);
-}
+void OdePlasticJoint::prefetch() const { prefetch_object(this); }
+
+void OdePlasticJoint::prefetch_rows() const { prefetch_object(rows_); }
 
 std::size_t OdePlasticJoint::state_bytes() { return sizeof(OdePlasticJoint) + sizeof(OdePlasticRows); }
 
@@ -127,6 +126,14 @@ JointEvent OdePlasticJoint::after_step(double dt) {
     if (event != JointEvent::None) wake();
     if (event == JointEvent::Broke) dJointDisable(rows_);  // broken stays broken
     return event;
+}
+
+OdePlasticJoint::Settled OdePlasticJoint::after_step_and_plan(double dt) {
+    const JointEvent event = after_step(dt);
+    if (driver_.broken()) return {event, true};  // before_step has nothing to do
+    if (rows_work_.counting()) return {event, false};
+    before_step(dt);
+    return {event, true};
 }
 
 }  // namespace plascap

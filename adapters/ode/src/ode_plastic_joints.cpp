@@ -17,14 +17,18 @@ OdePlasticJoint& OdePlasticJoints::add(dBodyID a, dBodyID b, const Pose& frame_i
 
 void OdePlasticJoints::step(double dt, Stepper stepper) {
     // Has the joint kPrefetchAhead places after i loaded while i computes, once the joints' state
-    // passes kPrefetchFromBytes (prefetch.hpp).
+    // passes kPrefetchFromBytes (prefetch.hpp); in the first loop, only joints it will plan.
     const bool loads_ahead = joints_.size() * OdePlasticJoint::state_bytes() > kPrefetchFromBytes;
-    const auto prefetch_ahead_of = [&](std::size_t i) {
-        if (loads_ahead && i + kPrefetchAhead < joints_.size()) joints_[i + kPrefetchAhead].joint->prefetch();
+    const auto prefetch_ahead_of = [&](std::size_t i, bool unready_only) {
+        if (!loads_ahead) return;
+        const auto wanted = [&](std::size_t j) { return j < joints_.size() && !(unready_only && joints_[j].ready_for_dt == dt); };
+        if (wanted(i + kPrefetchAhead)) joints_[i + kPrefetchAhead].joint->prefetch();
+        if (wanted(i + kPrefetchRowsAhead)) joints_[i + kPrefetchRowsAhead].joint->prefetch_rows();
     };
     for (std::size_t i = 0; i < joints_.size(); ++i) {
-        prefetch_ahead_of(i);
+        prefetch_ahead_of(i, true);
         Entry& e = joints_[i];
+        if (e.ready_for_dt == dt) continue;  // planned when the last step settled it
         // Due when the step starts within half a step of the time asked for (no drift from summing dt).
         if (!e.joint->engaged() && e.takes_hold_at < time_ + 0.5 * dt) e.joint->engage(time_);
         if (e.joint->engaged()) e.joint->before_step(dt);
@@ -38,10 +42,13 @@ void OdePlasticJoints::step(double dt, Stepper stepper) {
     }
     book_contact_work(dt);
     for (std::size_t i = 0; i < joints_.size(); ++i) {
-        prefetch_ahead_of(i);
+        prefetch_ahead_of(i, false);
         Entry& e = joints_[i];
+        e.ready_for_dt = kNotReady;
         if (!e.joint->engaged()) continue;
-        if (e.joint->after_step(dt) == JointEvent::Broke && e.joint->body_a())
+        const OdePlasticJoint::Settled settled = e.joint->after_step_and_plan(dt);
+        if (settled.ready) e.ready_for_dt = dt;
+        if (settled.event == JointEvent::Broke && e.joint->body_a())
             joined_.erase(joined_.find(std::minmax(e.joint->body_a(), e.joint->body_b())));
     }
     time_ += dt;

@@ -14,6 +14,9 @@ namespace plascap {
 // How many joints ahead a world's loop loads: enough to hide a memory access behind the joints'
 // work (about 0.1–0.3 µs each), few enough that the loaded lines are still in the cache when used.
 inline constexpr std::size_t kPrefetchAhead = 4;
+// What a joint's object points to (its engine rows) is loaded half as far ahead: the pointer is read
+// from the object, which must have arrived by then, or reading it waits on memory.
+inline constexpr std::size_t kPrefetchRowsAhead = kPrefetchAhead / 2;
 
 // A group of joints loads ahead once their state passes this size: below it the state stays in
 // the cache from one step to the next (1,000 ODE joints, 3.4 MB, cost the same per joint as 100),

@@ -41,11 +41,25 @@ public:
     void before_step(double dt);
     // What the step did to the joint (None once it is broken).
     JointEvent after_step(double dt);
-    // Asks the CPU to load the joint's state (this object and its ODE rows) for its coming turn
-    // (prefetch.hpp). A loop over many joints calls it kPrefetchAhead joints ahead; OdePlasticJoints
-    // does.
+    // after_step(dt), then at once before_step(dt) for a next step of the same dt, while the joint's
+    // state is still in the cache: one pass over the joint a step instead of two (OdePlasticJoints
+    // does this). The plan reads what before_step would read then — the state after_step measured —
+    // so the rows are the same; it is skipped for a joint that counts its rows' work, which needs
+    // the velocities the next step starts from. `ready`: the joint needs no before_step before a
+    // next step of dt (planned, or broken).
+    struct Settled {
+        JointEvent event;
+        bool ready;
+    };
+    Settled after_step_and_plan(double dt);
+    // Ask the CPU to load the joint's state for its coming turn (prefetch.hpp), in two stages:
+    // prefetch() this object, kPrefetchAhead joints ahead; prefetch_rows() its ODE rows, found
+    // through this object, kPrefetchRowsAhead joints ahead — by then this object has arrived, so
+    // reading where its rows are does not wait on memory (as it did when both came at once).
+    // OdePlasticJoints does both.
     void prefetch() const;
-    // The bytes prefetch() loads [B].
+    void prefetch_rows() const;
+    // The bytes the two load [B].
     static std::size_t state_bytes();
 
     const PlasticJointLaw& law() const { return driver_.law(); }

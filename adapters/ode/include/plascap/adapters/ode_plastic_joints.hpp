@@ -1,7 +1,9 @@
 #pragma once
 // Every plastic joint of one ODE world, stepped with it in one call, so a user cannot forget a step
 // of the cycle: step(dt) engages the joints whose time has come, plans every joint's rows, steps the
-// world (dWorldQuickStep or dWorldStep), and settles every joint. It owns its joints.
+// world (dWorldQuickStep or dWorldStep), and settles every joint. It owns its joints. Each joint is
+// settled and planned for a next step of the same dt in one pass (OdePlasticJoint::
+// after_step_and_plan), so a run at a constant dt reads each joint's state once a step.
 //
 // Collisions: ODE has no built-in contact handling. collide() does the usual dSpaceCollide with a
 // near callback that skips bodies held by an intact plastic joint (as Bullet does for a
@@ -12,6 +14,7 @@
 
 #include <deque>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <set>
 #include <utility>
@@ -61,9 +64,14 @@ public:
     const OdePlasticJoint& operator[](std::size_t i) const { return *joints_[i].joint; }
 
 private:
+    static constexpr double kNotReady = std::numeric_limits<double>::quiet_NaN();
     struct Entry {
         std::unique_ptr<OdePlasticJoint> joint;
         double takes_hold_at;
+        // The dt of the next step the joint is ready for (after_step_and_plan); NaN, equal to no dt:
+        // it is not. Kept here, beside the pointer, so a step passes over a ready joint without
+        // loading it.
+        double ready_for_dt = kNotReady;
     };
     // A contact joint of the coming step: its bodies (either may be 0, the static world), their
     // velocities at the step's start, and the forces ODE reports back (at a stable address).
