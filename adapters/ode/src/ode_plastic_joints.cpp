@@ -25,6 +25,10 @@ void OdePlasticJoints::step(double dt, Stepper stepper) {
         if (wanted(i + kPrefetchAhead)) joints_[i + kPrefetchAhead].joint->prefetch();
         if (wanted(i + kPrefetchRowsAhead)) joints_[i + kPrefetchRowsAhead].joint->prefetch_rows();
     };
+    // Plans made ahead are for a next step of this dt: with a dt that changes from step to step they
+    // would all be made again, so they are made only once the dt has repeated.
+    const bool plans_ahead = dt == last_dt_;
+    last_dt_ = dt;
     for (std::size_t i = 0; i < joints_.size(); ++i) {
         prefetch_ahead_of(i, true);
         Entry& e = joints_[i];
@@ -46,7 +50,8 @@ void OdePlasticJoints::step(double dt, Stepper stepper) {
         Entry& e = joints_[i];
         e.ready_for_dt = kNotReady;
         if (!e.joint->engaged()) continue;
-        const OdePlasticJoint::Settled settled = e.joint->after_step_and_plan(dt);
+        const OdePlasticJoint::Settled settled =
+            plans_ahead ? e.joint->after_step_and_plan(dt) : OdePlasticJoint::Settled{e.joint->after_step(dt), false};
         if (settled.ready) e.ready_for_dt = dt;
         if (settled.event == JointEvent::Broke && e.joint->body_a())
             joined_.erase(joined_.find(std::minmax(e.joint->body_a(), e.joint->body_b())));

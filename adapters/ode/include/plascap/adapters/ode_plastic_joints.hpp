@@ -3,7 +3,8 @@
 // of the cycle: step(dt) engages the joints whose time has come, plans every joint's rows, steps the
 // world (dWorldQuickStep or dWorldStep), and settles every joint. It owns its joints. Each joint is
 // settled and planned for a next step of the same dt in one pass (OdePlasticJoint::
-// after_step_and_plan), so a run at a constant dt reads each joint's state once a step.
+// after_step_and_plan) once the dt has repeated, so a run at a constant dt reads each joint's state
+// once a step.
 //
 // Collisions: ODE has no built-in contact handling. collide() does the usual dSpaceCollide with a
 // near callback that skips bodies held by an intact plastic joint (as Bullet does for a
@@ -92,6 +93,7 @@ private:
     std::deque<Contact> contacts_;  // those collide() made for the coming step
     double contact_work_ = 0.0;
     double time_ = 0.0;
+    double last_dt_ = kNotReady;  // the dt of the last step
 };
 
 }  // namespace plascap
