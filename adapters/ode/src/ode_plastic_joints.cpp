@@ -18,21 +18,23 @@ OdePlasticJoint& OdePlasticJoints::add(dBodyID a, dBodyID b, const Pose& frame_i
 void OdePlasticJoints::step(double dt, Stepper stepper) {
     // Has the joint kPrefetchAhead places after i loaded while i computes, once the joints' state
     // passes kPrefetchFromBytes (prefetch.hpp); in the first loop, only joints it will plan.
+    // A joint's plan made as the last step settled it is for a step of the last step's dt. With a dt
+    // that changes from step to step every such plan would be made again, so plans are made ahead
+    // only once the dt has repeated, and used only while it does.
+    const bool dt_repeats = dt == last_dt_;
+    last_dt_ = dt;
+    const auto planned = [&](const Entry& e) { return dt_repeats && e.ready; };
     const bool loads_ahead = joints_.size() * OdePlasticJoint::state_bytes() > kPrefetchFromBytes;
-    const auto prefetch_ahead_of = [&](std::size_t i, bool unready_only) {
+    const auto prefetch_ahead_of = [&](std::size_t i, bool unplanned_only) {
         if (!loads_ahead) return;
-        const auto wanted = [&](std::size_t j) { return j < joints_.size() && !(unready_only && joints_[j].ready_for_dt == dt); };
+        const auto wanted = [&](std::size_t j) { return j < joints_.size() && !(unplanned_only && planned(joints_[j])); };
         if (wanted(i + kPrefetchAhead)) joints_[i + kPrefetchAhead].joint->prefetch();
         if (wanted(i + kPrefetchRowsAhead)) joints_[i + kPrefetchRowsAhead].joint->prefetch_rows();
     };
-    // Plans made ahead are for a next step of this dt: with a dt that changes from step to step they
-    // would all be made again, so they are made only once the dt has repeated.
-    const bool plans_ahead = dt == last_dt_;
-    last_dt_ = dt;
     for (std::size_t i = 0; i < joints_.size(); ++i) {
         prefetch_ahead_of(i, true);
         Entry& e = joints_[i];
-        if (e.ready_for_dt == dt) continue;  // planned when the last step settled it
+        if (planned(e)) continue;  // planned when the last step settled it
         // Due when the step starts within half a step of the time asked for (no drift from summing dt).
         if (!e.joint->engaged() && e.takes_hold_at < time_ + 0.5 * dt) e.joint->engage(time_);
         if (e.joint->engaged()) e.joint->before_step(dt);
@@ -48,11 +50,11 @@ void OdePlasticJoints::step(double dt, Stepper stepper) {
     for (std::size_t i = 0; i < joints_.size(); ++i) {
         prefetch_ahead_of(i, false);
         Entry& e = joints_[i];
-        e.ready_for_dt = kNotReady;
+        e.ready = false;
         if (!e.joint->engaged()) continue;
         const OdePlasticJoint::Settled settled =
-            plans_ahead ? e.joint->after_step_and_plan(dt) : OdePlasticJoint::Settled{e.joint->after_step(dt), false};
-        if (settled.ready) e.ready_for_dt = dt;
+            dt_repeats ? e.joint->after_step_and_plan(dt) : OdePlasticJoint::Settled{e.joint->after_step(dt), false};
+        e.ready = settled.ready;
         if (settled.event == JointEvent::Broke && e.joint->body_a())
             joined_.erase(joined_.find(std::minmax(e.joint->body_a(), e.joint->body_b())));
     }

@@ -65,14 +65,12 @@ public:
     const OdePlasticJoint& operator[](std::size_t i) const { return *joints_[i].joint; }
 
 private:
-    static constexpr double kNotReady = std::numeric_limits<double>::quiet_NaN();
     struct Entry {
         std::unique_ptr<OdePlasticJoint> joint;
         double takes_hold_at;
-        // The dt of the next step the joint is ready for (after_step_and_plan); NaN, equal to no dt:
-        // it is not. Kept here, beside the pointer, so a step passes over a ready joint without
-        // loading it.
-        double ready_for_dt = kNotReady;
+        // Ready for a next step of the last step's dt (after_step_and_plan). Kept here, beside the
+        // pointer, so a step passes over a ready joint without loading it.
+        bool ready = false;
     };
     // A contact joint of the coming step: its bodies (either may be 0, the static world), their
     // velocities at the step's start, and the forces ODE reports back (at a stable address).
@@ -93,7 +91,7 @@ private:
     std::deque<Contact> contacts_;  // those collide() made for the coming step
     double contact_work_ = 0.0;
     double time_ = 0.0;
-    double last_dt_ = kNotReady;  // the dt of the last step
+    double last_dt_ = std::numeric_limits<double>::quiet_NaN();  // the dt of the last step; NaN before the first
 };
 
 }  // namespace plascap
