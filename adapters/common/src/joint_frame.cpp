@@ -7,21 +7,23 @@ namespace plascap {
 namespace {
 
 Vec3 column(const Mat3& m, std::size_t j) { return {m[0][j], m[1][j], m[2][j]}; }
+Vec3 apply(const Mat3& m, const Vec3& v) { return {dot(m[0], v), dot(m[1], v), dot(m[2], v)}; }
+
+}  // namespace
+
 Mat3 multiply(const Mat3& a, const Mat3& b) {
     Mat3 m{};
     for (std::size_t i = 0; i < 3; ++i)
         for (std::size_t j = 0; j < 3; ++j) m[i][j] = a[i][0] * b[0][j] + a[i][1] * b[1][j] + a[i][2] * b[2][j];
     return m;
 }
+
 Mat3 transpose(const Mat3& a) {
     Mat3 m{};
     for (std::size_t i = 0; i < 3; ++i)
         for (std::size_t j = 0; j < 3; ++j) m[i][j] = a[j][i];
     return m;
 }
-Vec3 apply(const Mat3& m, const Vec3& v) { return {dot(m[0], v), dot(m[1], v), dot(m[2], v)}; }
-
-}  // namespace
 
 Pose compose(const Pose& parent, const Pose& local) {
     const Vec3 moved = apply(parent.rotation, local.origin);

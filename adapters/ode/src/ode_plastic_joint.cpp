@@ -33,21 +33,17 @@ BodyInertia inertia_of(dBodyID body) {
     dMass m;
     dBodyGetMass(body, &m);
     const Pose p = pose_of(body);
-    // I_world⁻¹ = R·I_body⁻¹·Rᵀ
+    const Mat3& r = p.rotation;
+    // I_body⁻¹ by cofactors (adjugate / det), one division for all nine; ODE keeps I as 3 rows of 4.
     const double a = m.I[0], b = m.I[1], c = m.I[2], d = m.I[4], e = m.I[5], f = m.I[6], g = m.I[8], h = m.I[9], k = m.I[10];
-    const double det = a * (e * k - f * h) - b * (d * k - f * g) + c * (d * h - e * g);
-    const Mat3 inverse_body = {{{(e * k - f * h) / det, (c * h - b * k) / det, (b * f - c * e) / det},
-                                {(f * g - d * k) / det, (a * k - c * g) / det, (c * d - a * f) / det},
-                                {(d * h - e * g) / det, (b * g - a * h) / det, (a * e - b * d) / det}}};
+    const double co_a = e * k - f * h, co_b = f * g - d * k, co_c = d * h - e * g;
+    const double inv_det = 1.0 / (a * co_a + b * co_b + c * co_c);
+    const Mat3 inverse_body = {{{co_a * inv_det, (c * h - b * k) * inv_det, (b * f - c * e) * inv_det},
+                                {co_b * inv_det, (a * k - c * g) * inv_det, (c * d - a * f) * inv_det},
+                                {co_c * inv_det, (b * g - a * h) * inv_det, (a * e - b * d) * inv_det}}};
     BodyInertia inertia;
     inertia.inverse_mass = 1.0 / m.mass;
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) {
-            double sum = 0.0;
-            for (int p1 = 0; p1 < 3; ++p1)
-                for (int p2 = 0; p2 < 3; ++p2) sum += p.rotation[i][p1] * inverse_body[p1][p2] * p.rotation[j][p2];
-            inertia.inverse_inertia_world[i][j] = sum;
-        }
+    inertia.inverse_inertia_world = multiply(multiply(r, inverse_body), transpose(r));  // R·I_body⁻¹·Rᵀ
     inertia.centre = p.origin;
     return inertia;
 }

@@ -31,6 +31,9 @@ struct JointFrameState {
 
 JointFrameState measure_joint(const Pose& frame_on_a, const Pose& frame_on_b);
 
+Mat3 multiply(const Mat3& a, const Mat3& b);  // a·b
+Mat3 transpose(const Mat3& a);                 // aᵀ
+
 // Poses and rotations composed: parent ∘ local.
 Pose compose(const Pose& parent, const Pose& local);
 // The pose of `world_pose` seen from `parent` (parent⁻¹ ∘ world_pose).
