@@ -11,20 +11,6 @@ Vec3 apply(const Mat3& m, const Vec3& v) { return {dot(m[0], v), dot(m[1], v), d
 
 }  // namespace
 
-Mat3 multiply(const Mat3& a, const Mat3& b) {
-    Mat3 m{};
-    for (std::size_t i = 0; i < 3; ++i)
-        for (std::size_t j = 0; j < 3; ++j) m[i][j] = a[i][0] * b[0][j] + a[i][1] * b[1][j] + a[i][2] * b[2][j];
-    return m;
-}
-
-Mat3 transpose(const Mat3& a) {
-    Mat3 m{};
-    for (std::size_t i = 0; i < 3; ++i)
-        for (std::size_t j = 0; j < 3; ++j) m[i][j] = a[j][i];
-    return m;
-}
-
 Pose compose(const Pose& parent, const Pose& local) {
     const Vec3 moved = apply(parent.rotation, local.origin);
     return {{parent.origin[0] + moved[0], parent.origin[1] + moved[1], parent.origin[2] + moved[2]},

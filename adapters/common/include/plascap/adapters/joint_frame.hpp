@@ -31,8 +31,20 @@ struct JointFrameState {
 
 JointFrameState measure_joint(const Pose& frame_on_a, const Pose& frame_on_b);
 
-Mat3 multiply(const Mat3& a, const Mat3& b);  // a·b
-Mat3 transpose(const Mat3& a);                 // aᵀ
+// a·b and aᵀ; inline, as the steps of every joint's measurement.
+inline Mat3 multiply(const Mat3& a, const Mat3& b) {
+    Mat3 m{};
+    for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = 0; j < 3; ++j) m[i][j] = a[i][0] * b[0][j] + a[i][1] * b[1][j] + a[i][2] * b[2][j];
+    return m;
+}
+
+inline Mat3 transpose(const Mat3& a) {
+    Mat3 m{};
+    for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = 0; j < 3; ++j) m[i][j] = a[j][i];
+    return m;
+}
 
 // Poses and rotations composed: parent ∘ local.
 Pose compose(const Pose& parent, const Pose& local);
