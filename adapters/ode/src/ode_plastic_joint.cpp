@@ -34,7 +34,7 @@ BodyInertia inertia_of(dBodyID body) {
     dBodyGetMass(body, &m);
     const Pose p = pose_of(body);
     const Mat3& r = p.rotation;
-    // I_body⁻¹ by cofactors (adjugate / det), one division for all nine; ODE keeps I as 3 rows of 4.
+    // I_body⁻¹ by Cramer's rule (adjugate / det), one division for all nine; ODE keeps I as 3 rows of 4.
     const double a = m.I[0], b = m.I[1], c = m.I[2], d = m.I[4], e = m.I[5], f = m.I[6], g = m.I[8], h = m.I[9], k = m.I[10];
     const double co_a = e * k - f * h, co_b = f * g - d * k, co_c = d * h - e * g;
     const double inv_det = 1.0 / (a * co_a + b * co_b + c * co_c);
@@ -43,7 +43,9 @@ BodyInertia inertia_of(dBodyID body) {
                                 {co_c * inv_det, (b * g - a * h) * inv_det, (a * e - b * d) * inv_det}}};
     BodyInertia inertia;
     inertia.inverse_mass = 1.0 / m.mass;
-    inertia.inverse_inertia_world = multiply(multiply(r, inverse_body), transpose(r));  // R·I_body⁻¹·Rᵀ
+    // I_world⁻¹ = R·I_body⁻¹·Rᵀ (Baraff, "An Introduction to Physically Based Modeling: Rigid Body
+    // Simulation I", eq. 2-37ff: I = R·I_body·Rᵀ, so its inverse turns the same way).
+    inertia.inverse_inertia_world = multiply(multiply(r, inverse_body), transpose(r));
     inertia.centre = p.origin;
     return inertia;
 }
