@@ -34,7 +34,8 @@ void ElasticPlasticLaw::start(double position) {
 }
 
 RowCommand ElasticPlasticLaw::plan(double position, double dt, double effective_mass, std::optional<double> joint_bound) {
-    planned_position_ = position, planned_dt_ = dt, planned_mass_ = effective_mass;
+    planned_position_ = position;
+    planned_stopping_stiffness_ = effective_mass / (dt * dt);
     omega_dt_ = spring_omega_dt(law_.stiffness, effective_mass, dt);
     regime_ = regime_for(law_.stiffness.has_value(), omega_dt_);  // eq. 3.2
     if (regime_ != Regime::ElasticPlastic) {
@@ -76,8 +77,8 @@ void ElasticPlasticLaw::settle_rigid_plastic(double position, double applied_for
     const double side_bound = applied_force >= 0.0 ? last_upper_ : -last_lower_;
     const double share = side_bound > 0.0 ? applied_force / side_bound : 0.0;
     const double motion = position - planned_position_;
-    const double stopping = std::isfinite(planned_mass_) && side_bound > 0.0
-                                ? planned_mass_ * std::abs(motion) / (planned_dt_ * planned_dt_) / side_bound
+    const double stopping = std::isfinite(planned_stopping_stiffness_) && side_bound > 0.0
+                                ? planned_stopping_stiffness_ * std::abs(motion) / side_bound
                                 : 0.0;  // m·|Δx|/dt² over the bound
     const bool flowed = flow_.flowed(share, stopping);
     if (!flow_.at_bound()) {

@@ -7,19 +7,31 @@
 
 namespace plascap {
 
+struct PlasticJointLaw::Coupling {
+    const YieldCondition& condition;  // owned by settings_
+    detail::AxisCapacities axes;      // where the condition meets each dof axis
+    YieldHint hint;                   // the last solve's point, to start the next from
+};
+
 PlasticJointLaw::PlasticJointLaw(const PlasticJointSettings& settings, RowCapabilities rows)
-    : settings_(settings), rows_(rows) {
+    : settings_(std::make_shared<const PlasticJointSettings>(settings)), modes_(settings.modes),
+      max_plastic_displacement_(settings.max_plastic_displacement),
+      max_plastic_rotation_(settings.max_plastic_rotation), rows_(rows) {
     validate_joint_settings(settings, "plastic joint");
     for (Dof dof : kAllDofs) {
         if (mode(dof) != DofMode::Plastic) continue;
         laws_[index(dof)].emplace(settings.laws[index(dof)], rows.two_sided_bounds);
         if (settings.yield_condition) laws_[index(dof)]->couple();
     }
-    if (settings.yield_condition) {
-        axis_positive_ = settings.yield_condition->axis_capacity(true);
-        axis_negative_ = settings.yield_condition->axis_capacity(false);
+    if (const YieldCondition* condition = settings_->yield_condition.get()) {
+        // new, not make_unique: an aggregate with a reference member (GCC 12 will not build it from parentheses).
+        coupling_.reset(new Coupling{*condition, {condition->axis_capacity(true), condition->axis_capacity(false)}, {}});
     }
 }
+
+PlasticJointLaw::~PlasticJointLaw() = default;
+PlasticJointLaw::PlasticJointLaw(PlasticJointLaw&&) noexcept = default;
+PlasticJointLaw& PlasticJointLaw::operator=(PlasticJointLaw&&) noexcept = default;
 
 PerDof<ElasticPlasticLaw*> PlasticJointLaw::plastic_laws() {
     PerDof<ElasticPlasticLaw*> laws{};
@@ -92,9 +104,9 @@ PerDof<std::optional<RowCommand>> PlasticJointLaw::plan(const PerDof<double>& me
     track(measured, positions);
     PerDof<std::optional<RowCommand>> commands;
     PerDof<std::optional<double>> bounds;
-    if (settings_.yield_condition)
-        bounds = detail::coupled_hold_bounds(*settings_.yield_condition, {axis_positive_, axis_negative_}, hint_,
-                                             last_loads_, plastic_laws());
+    if (coupling_)
+        bounds = detail::coupled_hold_bounds(coupling_->condition, coupling_->axes, coupling_->hint, last_loads_,
+                                             plastic_laws());
     for (std::size_t i = 0; i < kDofCount; ++i) {
         if (laws_[i]) commands[i] = laws_[i]->plan(positions[i], dt, effective_masses[i], bounds[i]);
     }
@@ -131,12 +143,11 @@ bool PlasticJointLaw::settle(const PerDof<double>& measured, const PerDof<double
         if (laws_[i]) laws_[i]->settle(positions[i], forces[i], corrected_motion[i]);
         last_loads_[i] = -forces[i];
     }
-    if (settings_.yield_condition)
-        detail::coupled_return_mapping(*settings_.yield_condition, {axis_positive_, axis_negative_}, hint_, positions,
-                                       last_loads_, plastic_laws());
+    if (coupling_)
+        detail::coupled_return_mapping(coupling_->condition, coupling_->axes, coupling_->hint, positions, last_loads_,
+                                       plastic_laws());
     summarise();
-    if (plastic_displacement() > settings_.max_plastic_displacement ||
-        plastic_rotation() > settings_.max_plastic_rotation) {
+    if (plastic_displacement() > max_plastic_displacement_ || plastic_rotation() > max_plastic_rotation_) {
         broken_at_ = time;
         return true;
     }
@@ -171,13 +182,13 @@ double PlasticJointLaw::dissipated_by_corrections() const {
 }
 
 double PlasticJointLaw::utilisation() const {
-    if (settings_.yield_condition) {
+    if (coupling_) {
         // Well inside, the inscribed cross-polytope's share bounds U from above and costs no solve
         // (a report of a thousand joints would otherwise solve for each one's U).
-        const double share = detail::cross_polytope_share({axis_positive_, axis_negative_}, last_loads_);
+        const double share = detail::cross_polytope_share(coupling_->axes, last_loads_);
         if (share <= detail::kFarInside) return share;
-        YieldHint hint = hint_;  // a copy: a report must not move the law's own starting point
-        return settings_.yield_condition->evaluate(last_loads_, hint).utilisation;
+        YieldHint hint = coupling_->hint;  // a copy: a report must not move the law's own starting point
+        return coupling_->condition.evaluate(last_loads_, hint).utilisation;
     }
     double u = 0.0;
     for (std::size_t i = 0; i < kDofCount; ++i) {

@@ -2,6 +2,7 @@
 // The joint-level law: six dof laws, the breaking rule, and the totals reports need. Engine
 // adapters call plan() before each step and settle() after it; nothing here knows an engine.
 // With a yield condition in the settings, the plastic dofs yield together on it (coupled_yield.hpp).
+#include <memory>
 #include <optional>
 
 #include "plascap/adapters/dof.hpp"
@@ -15,6 +16,9 @@ class PlasticJointLaw {
 public:
     // `rows`: what the engine's rows measure and carry (row_capabilities.hpp).
     explicit PlasticJointLaw(const PlasticJointSettings& settings, RowCapabilities rows = {});
+    ~PlasticJointLaw();
+    PlasticJointLaw(PlasticJointLaw&&) noexcept;
+    PlasticJointLaw& operator=(PlasticJointLaw&&) noexcept;
 
     // When the joint takes hold (it may be built before, on bodies that have moved since): these
     // positions are its unloaded state. Engines lock rigid dofs at them too. Every call takes the
@@ -40,7 +44,7 @@ public:
         if (!broken()) broken_at_ = time;
     }
 
-    DofMode mode(Dof dof) const { return settings_.modes[index(dof)]; }
+    DofMode mode(Dof dof) const { return modes_[index(dof)]; }
     // The law of a plastic dof; nullptr for free and rigid ones.
     const ElasticPlasticLaw* law(Dof dof) const;
 
@@ -62,7 +66,7 @@ public:
     // independent limits, eq. 2.10–2.14); 1 at yield, 0 before the first step. For reports. With a
     // condition and Σ|s_j|/C_j ≤ 1/2 (far inside), that sum, an upper bound of U, without a solve.
     double utilisation() const;
-    const PlasticJointSettings& settings() const { return settings_; }
+    const PlasticJointSettings& settings() const { return *settings_; }
 
 private:
     // What the dof laws say after a settle: kept, not recomputed, because the driver and the
@@ -80,14 +84,21 @@ private:
 
     bool euler_rows() const { return rows_.rotations == RotationMeasure::EulerXYZ; }
 
-    PlasticJointSettings settings_;
+    // What a coupled yield condition needs beside the dof laws (plastic_joint_law.cpp). Only a joint
+    // with one carries it, and the settings stay out of the joint's own bytes but for what each
+    // step reads: a step of 10,000 joints waits on memory for every byte of theirs (issue 16,
+    // docs/adapters.md "Cost").
+    struct Coupling;
+
+    std::shared_ptr<const PlasticJointSettings> settings_;  // as given, for settings()
+    PerDof<DofMode> modes_;
+    double max_plastic_displacement_, max_plastic_rotation_;  // settings_'s, read every step
     RowCapabilities rows_;
+    std::unique_ptr<Coupling> coupling_;  // none without a yield condition
     PerDof<std::optional<ElasticPlasticLaw>> laws_;
     std::optional<double> broken_at_;
-    PerDof<double> last_loads_{};  // the loads (−forces on b) of the last step, for a coupled condition
-    YieldHint hint_;
+    PerDof<double> last_loads_{};  // the loads (−forces on b) of the last step: utilisation, coupling
     PerDof<double> last_measured_{}, last_continuous_{};
-    PerDof<double> axis_positive_{}, axis_negative_{};  // the condition's axis capacities
     Summary summary_;
 };
 
