@@ -86,12 +86,13 @@ std::optional<BodyVelocity> OdePlasticJoint::a_body_velocity() const {
 
 void OdePlasticJoint::before_step(double dt) {
     if (driver_.broken()) return;
-    const JointFrameState state = measured_ ? *measured_ : measure();  // the end of a step is the start of the next
-    measured_.reset();
+    plan(measure(), dt);
+}
+
+void OdePlasticJoint::plan(const JointFrameState& state, double dt) {
     if (rows_work_.counting()) rows_work_.step_starts(body_velocity(b_), a_body_velocity());
-    const dReal* centre = dBodyGetPosition(b_);
     const PerDof<std::optional<RowCommand>> commands =
-        driver_.plan(state, {centre[0], centre[1], centre[2]}, dt, [&] {
+        driver_.plan(state, dt, [&] {
             return std::pair{inertia_of(b_), a_ ? std::optional<BodyInertia>(inertia_of(a_)) : std::nullopt};
         });
     PerDof<std::optional<OdeRowTarget>> targets;
@@ -115,22 +116,27 @@ void OdePlasticJoint::wake() {
 
 JointEvent OdePlasticJoint::after_step(double dt) {
     if (driver_.broken()) return driver_.settle({}, {}, dt);  // None; keeps the clock
+    return settle(measure(), dt);
+}
+
+JointEvent OdePlasticJoint::settle(const JointFrameState& state, double dt) {
     // Bodies are attached as (b, a): ODE's f1, t1 act on b, and f2, t2 on a.
     const WorldLoad on_b{{feedback_.f1[0], feedback_.f1[1], feedback_.f1[2]}, {feedback_.t1[0], feedback_.t1[1], feedback_.t1[2]}};
     const WorldLoad on_a{{feedback_.f2[0], feedback_.f2[1], feedback_.f2[2]}, {feedback_.t2[0], feedback_.t2[1], feedback_.t2[2]}};
     if (rows_work_.counting()) rows_work_.step_ends(on_b, on_a, body_velocity(b_), a_body_velocity(), dt);
-    measured_ = measure();
-    const JointEvent event = driver_.settle(on_b, measured_->positions, dt);
+    const JointEvent event = driver_.settle(rows_->forces_on_b(on_b), state.positions, dt);
     if (event != JointEvent::None) wake();
     if (event == JointEvent::Broke) dJointDisable(rows_);  // broken stays broken
     return event;
 }
 
 OdePlasticJoint::Settled OdePlasticJoint::after_step_and_plan(double dt) {
-    const JointEvent event = after_step(dt);
-    if (driver_.broken()) return {event, true};  // before_step has nothing to do
+    if (driver_.broken()) return {driver_.settle({}, {}, dt), true};  // None; before_step has nothing to do
+    const JointFrameState state = measure();  // the end of this step is the start of the next
+    const JointEvent event = settle(state, dt);
+    if (driver_.broken()) return {event, true};
     if (rows_work_.counting()) return {event, false};
-    before_step(dt);
+    plan(state, dt);
     return {event, true};
 }
 

@@ -81,6 +81,10 @@ public:
 
 private:
     JointFrameState measure() const;
+    // The rows of the next step of dt, from the joint as measured at its start.
+    void plan(const JointFrameState& state, double dt);
+    // The law after a step, from the rows' feedback and the joint as measured at its end.
+    JointEvent settle(const JointFrameState& state, double dt);
     std::optional<BodyVelocity> a_body_velocity() const;  // none when b is joined to the world
     void wake();
 
@@ -90,7 +94,6 @@ private:
     dJointFeedback feedback_{};
     PlasticJointDriver driver_;
     RowsWork rows_work_;
-    std::optional<JointFrameState> measured_;  // after_step's state: the next before_step's start
 };
 
 }  // namespace plascap
