@@ -60,13 +60,15 @@ TEST(JointDriver, ReportsEachStepsEventOnceAndBreaksOnce) {
     state.axes.rotation = state.axes.translation;
     BodyInertia block;  // b, a point mass kMass at the anchor
     block.inverse_mass = 1.0 / kMass;
-    const auto plan = [&] { driver.plan(state, {0, 0, 0}, kDt, [&] { return std::pair{block, std::optional<BodyInertia>{}}; }); };
-    // The row's force on b along y (the feedback), and where the step left the dof.
+    const auto plan = [&] { driver.plan(state, kDt, [&] { return std::pair{block, std::optional<BodyInertia>{}}; }); };
+    // The row's force on b along N, and where the step left the dof.
     const auto step = [&](double force, double to) {
         plan();
         x[index(Dof::N)] = to;
         state.positions = x;
-        return driver.settle({{0, force, 0}, {0, 0, 0}}, x, kDt);
+        PerDof<double> forces{};
+        forces[index(Dof::N)] = force;
+        return driver.settle(forces, x, kDt);
     };
     EXPECT_EQ(step(5.0, 0.0), JointEvent::None);       // half the capacity: holds
     EXPECT_EQ(step(10.0, -0.01), JointEvent::Yielded);  // at capacity and moving: flows 0.01 m

@@ -85,8 +85,10 @@ PerDof<double> BasicBulletPlasticJoint<Constraint>::positions() {
 
 template <class Constraint>
 void BasicBulletPlasticJoint<Constraint>::plan(double dt, const JointFrameState& state) {
+    planned_axes_ = state.axes;
+    planned_centre_of_b_ = to_vec3(b_.getCenterOfMassPosition());
     const PerDof<std::optional<RowCommand>> commands =
-        driver_.plan(state, to_vec3(b_.getCenterOfMassPosition()), dt, [&] {
+        driver_.plan(state, dt, [&] {
             return std::pair{inertia_of(b_), a_ ? std::optional<BodyInertia>(inertia_of(*a_)) : std::nullopt};
         }, bullet_rows::solved_masses(*constraint_));
     for (std::size_t i = 0; i < kDofCount; ++i) {
@@ -107,7 +109,8 @@ void BasicBulletPlasticJoint<Constraint>::updateAction(btCollisionWorld*, btScal
         note_step_start();  // this step's end is the next one's start
     }
     const JointFrameState state = bullet_rows::measure(*constraint_);  // the end of this step is the start of the next
-    switch (driver_.settle(load, state.positions, dt, bullet_rows::corrected_motion(*constraint_))) {
+    const PerDof<double> forces = joint_frame_loads(load, planned_centre_of_b_, planned_axes_);
+    switch (driver_.settle(forces, state.positions, dt, bullet_rows::corrected_motion(*constraint_))) {
         case JointEvent::Broke:
             wake();
             constraint_->setEnabled(false);  // broken stays broken: nothing re-enables it

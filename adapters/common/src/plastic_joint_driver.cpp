@@ -16,19 +16,11 @@ void PlasticJointDriver::engage(const PerDof<double>& positions, double now) {
     law_.start(positions);
 }
 
-PerDof<std::optional<RowCommand>> PlasticJointDriver::plan_with_masses(const JointFrameState& state,
-                                                                       const Vec3& centre_of_b, double dt,
-                                                                       const PerDof<double>& effective_masses) {
-    planned_axes_ = state.axes;
-    planned_centre_of_b_ = centre_of_b;
-    return law_.plan(state.positions, dt, effective_masses);
-}
-
-JointEvent PlasticJointDriver::settle(const WorldLoad& on_b, const PerDof<double>& positions, double dt,
+JointEvent PlasticJointDriver::settle(const PerDof<double>& forces_on_b, const PerDof<double>& positions, double dt,
                                       const PerDof<double>& corrected_motion) {
     time_ += dt;
     if (law_.broken()) return JointEvent::None;
-    forces_ = joint_frame_loads(on_b, planned_centre_of_b_, planned_axes_);
+    forces_ = forces_on_b;
     const double before = law_.plastic_displacement() + law_.plastic_rotation();
     law_.settle(positions, forces_, time_, corrected_motion);
     if (sever_) law_.sever(time_);

@@ -18,6 +18,7 @@
 
 #include "ode_joint_object.hpp"
 #include "plascap/adapters/joint_frame.hpp"
+#include "plascap/adapters/joint_loads.hpp"
 
 namespace plascap {
 
@@ -37,6 +38,12 @@ public:
     // The rows of the next step, for the joint as measured now (state's anchor is b's); no row for
     // a dof without a target.
     void set_rows(const JointFrameState& state, const PerDof<std::optional<OdeRowTarget>>& targets);
+
+    // The generalised forces the rows applied to b in the step they were set for
+    // (joint_frame_loads), from what ODE's feedback says they applied (on_b).
+    PerDof<double> forces_on_b(const WorldLoad& on_b) const {
+        return joint_frame_loads(on_b, difference(axes_.anchor, lever_b_), axes_);
+    }
 
     void getInfo1(Info1* info) override;
     void getInfo2(dReal worldFPS, dReal worldERP, int rowskip, dReal* J1, dReal* J2, int pairskip, dReal* pairRhsCfm,

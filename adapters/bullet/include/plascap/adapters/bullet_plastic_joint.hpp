@@ -72,6 +72,9 @@ private:
     btJointFeedback feedback_{};
     PlasticJointDriver driver_;
     RowsWork rows_work_;
+    // The axes and b's centre of mass the step was planned with: its feedback's forces act on them.
+    JointAxesInWorld planned_axes_{};
+    Vec3 planned_centre_of_b_{};
     btDynamicsWorld* world_ = nullptr;  // while attached
     bool constraint_in_world_ = false;  // until it breaks
 };

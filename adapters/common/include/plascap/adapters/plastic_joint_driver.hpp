@@ -44,16 +44,14 @@ public:
     bool engaged() const { return engaged_; }
     const PerDof<double>& engaged_positions() const { return engaged_positions_; }
 
-    // The row commands of the next step of dt, from the joint as measured at its start and b's
-    // centre of mass then (the feedback's torque is about it). `inertias()` → {b, a (nullopt: the
+    // The row commands of the next step of dt, from the joint as measured at its start. `inertias()` → {b, a (nullopt: the
     // world)} is called only when the rows' effective masses are needed: for a spring (eq. 3.2), or
     // for a rigid-plastic row that may reach its bound (flow_criterion.hpp); a joint far below its
     // capacities keeps the masses it last had. `solved_masses`: the rows' effective masses as the
     // engine's solver formed them for the last step, per dof (NaN: not known); used instead of
     // computing them when every plastic dof's is known.
     template <class Inertias>
-    PerDof<std::optional<RowCommand>> plan(const JointFrameState& state, const Vec3& centre_of_b, double dt,
-                                           Inertias&& inertias, const PerDof<double>& solved_masses = kUnknownMasses) {
+    PerDof<std::optional<RowCommand>> plan(const JointFrameState& state, double dt, Inertias&& inertias, const PerDof<double>& solved_masses = kUnknownMasses) {
         if (knows_every_plastic_mass(solved_masses)) {
             masses_ = solved_masses;
             masses_known_ = true;
@@ -62,14 +60,15 @@ public:
             masses_ = row_effective_masses(state.axes, bodies.first, bodies.second);
             masses_known_ = true;
         }
-        return plan_with_masses(state, centre_of_b, dt, masses_);
+        return law_.plan(state.positions, dt, masses_);
     }
 
-    // After the step: what the rows applied to b (world frame, torque about b's centre of mass as it
-    // was planned) and the dof positions now; `corrected_motion`, per dof, the part of the step's
+    // After the step: the generalised forces the rows applied to b during it (joint_frame_loads of
+    // their feedback, on the axes and b's centre of mass the step was planned with: the adapter's
+    // rows keep them) and the dof positions now; `corrected_motion`, per dof, the part of the step's
     // motion position corrections made outside the velocity solve (plastic_joint_law.hpp). A broken
     // joint reports None ever after.
-    JointEvent settle(const WorldLoad& on_b, const PerDof<double>& positions, double dt,
+    JointEvent settle(const PerDof<double>& forces_on_b, const PerDof<double>& positions, double dt,
                       const PerDof<double>& corrected_motion = {});
 
     // The joint breaks at the end of the next step whatever its load (a member removed): settle()
@@ -93,8 +92,6 @@ private:
         }
         return true;
     }
-    PerDof<std::optional<RowCommand>> plan_with_masses(const JointFrameState& state, const Vec3& centre_of_b, double dt,
-                                                       const PerDof<double>& effective_masses);
 
     PlasticJointLaw law_;
     bool springs_ = false;  // a plastic dof has a stiffness
@@ -102,8 +99,6 @@ private:
     PerDof<double> masses_{};  // the rows' effective masses as last computed
     bool engaged_ = false;
     PerDof<double> engaged_positions_{};
-    JointAxesInWorld planned_axes_{};
-    Vec3 planned_centre_of_b_{};
     PerDof<double> forces_{};
     double time_ = 0.0;
     BreakCallback on_break_;
