@@ -129,19 +129,63 @@ TEST(BulletLifecycle, ABrokenJointCallsBackOnceAndItsBodiesCollideAgain) {
 // F just below m·g: the block creeps down at a = g/600, far below Bullet's sleeping speed
 // (0.8 m/s), so its island would fall asleep after 2 s and freeze the flow; the yielding joint keeps
 // it awake, and the drop follows the oscillator's.
+// A block hanging from the world on axial(F), allowed to sleep (a BulletBox may not, by default).
+struct SleepableBlock {
+    BulletWorld world{btVector3(0, -kG, 0), 10};
+    BulletBox box{btVector3(0.1, 0.1, 0.1), kMass, at(-0.5)};
+    BulletPlasticJoint joint;
+    explicit SleepableBlock(double F) : joint(nullptr, box.body(), btTransform::getIdentity(), axial(F)) {
+        box.body().forceActivationState(ACTIVE_TAG);
+        world.world().addRigidBody(&box.body());
+        joint.attach(world.world(), kDt);
+    }
+    ~SleepableBlock() { world.world().removeRigidBody(&box.body()); }
+    btRigidBody& body() { return box.body(); }
+};
+
 TEST(BulletLifecycle, AYieldingJointKeepsItsBodiesAwake) {
     const double F = kMass * kG * (1 - 1.0 / 600);
-    BulletWorld world(btVector3(0, -kG, 0), 10);
-    BulletBox block(btVector3(0.1, 0.1, 0.1), kMass, at(-0.5));
-    block.body().forceActivationState(ACTIVE_TAG);  // this body may sleep
-    world.world().addRigidBody(&block.body());
-    BulletPlasticJoint joint(nullptr, block.body(), btTransform::getIdentity(), axial(F));
-    joint.attach(world.world(), kDt);
+    SleepableBlock block(F);
     const int steps = 500;  // 5 s
-    for (int i = 0; i < steps; ++i) world.step(kDt);
+    for (int i = 0; i < steps; ++i) block.world.step(kDt);
     EXPECT_TRUE(block.body().isActive());
     EXPECT_NEAR(-0.5 - block.body().getCenterOfMassPosition().y(), drop_after(steps, F), 1e-6 * drop_after(steps, F));
-    world.world().removeRigidBody(&block.body());
+}
+
+// A joint whose island sleeps costs a glance: Bullet solves none of its constraints, and the joint is
+// neither settled nor planned (solved() false) — its law stays as it was, its clock runs on — and
+// when the block is woken and pushed past the capacity, the rows planned before it slept flow at
+// once, as the oscillator says for the load m·g + P against F: a = (m·g + P − F)/m.
+TEST(BulletLifecycle, ASleepingJointIsSkippedAndFlowsWhenWoken) {
+    const double F = 2.0 * kMass * kG, push = 1.5 * kMass * kG;
+    SleepableBlock block(F);
+    BulletPlasticJoint& joint = block.joint;
+    int steps = 0;
+    for (; steps < 400 && block.body().isActive(); ++steps) block.world.step(kDt);
+    ASSERT_FALSE(block.body().isActive()) << "Bullet did not put the hanging block to sleep";
+    const double y = block.body().getCenterOfMassPosition().y();
+    const PerDof<double> forces = joint.forces();
+    for (int i = 0; i < 40; ++i) {
+        block.world.step(kDt);
+        ASSERT_FALSE(joint.solved()) << "asleep, step " << i;
+    }
+    EXPECT_EQ(block.body().getCenterOfMassPosition().y(), y);
+    EXPECT_EQ(joint.forces(), forces);                     // no settle: what the rows last applied
+    EXPECT_NEAR(forces[index(Dof::N)], kMass * kG, 1e-6);  // holding the weight
+    EXPECT_EQ(joint.law().plastic_displacement(), 0.0);
+    EXPECT_NEAR(joint.time(), (steps + 40) * kDt, 1e-12);
+
+    block.body().activate();
+    const int flowing = 30;
+    for (int i = 0; i < flowing; ++i) {
+        block.body().applyCentralForce(btVector3(0, -push, 0));
+        block.world.step(kDt);
+        ASSERT_TRUE(joint.solved()) << "awake, step " << i;
+    }
+    const double a = (kMass * kG + push - F) / kMass;
+    const double expected = 0.5 * a * kDt * kDt * flowing * (flowing + 1);
+    EXPECT_NEAR(y - block.body().getCenterOfMassPosition().y(), expected, 1e-6 * expected);
+    EXPECT_NEAR(joint.law().plastic_displacement(), expected, 1e-6 * expected);
 }
 #endif
 
@@ -315,6 +359,72 @@ TEST(OdeLifecycle, AYieldingJointKeepsItsBodiesAwake) {
     for (int i = 0; i < steps; ++i) joints.step(kDt, OdePlasticJoints::Stepper::Exact);
     EXPECT_TRUE(dBodyIsEnabled(block));
     EXPECT_NEAR(-0.5 - dBodyGetPosition(block)[1], drop_after(steps, F), 1e-6 * drop_after(steps, F));
+}
+
+// A joint whose bodies sleep costs a glance: ODE skips their island, so the joint is neither settled
+// nor planned (solved() false) — its law stays as it was, its clock runs on — and when the block is
+// woken and pushed past the capacity, the rows planned before it slept flow at once, as the
+// oscillator says for the load m·g + P against F: a = (m·g + P − F)/m.
+TEST(OdeLifecycle, ASleepingJointIsSkippedAndFlowsWhenWoken) {
+    const double F = 2.0 * kMass * kG, push = 1.5 * kMass * kG;
+    OdeWorld ode;
+    dWorldSetAutoDisableFlag(ode.world, 1);
+    const dBodyID block = ode.box(-0.5);
+    OdePlasticJoints joints(ode.world);
+    joints.add(nullptr, block, Pose{}, axial(F));
+    int steps = 0;
+    for (; steps < 100 && dBodyIsEnabled(block); ++steps) joints.step(kDt, OdePlasticJoints::Stepper::Exact);
+    ASSERT_FALSE(dBodyIsEnabled(block)) << "ODE's auto-disable did not put the hanging block to sleep";
+    // ODE disables idle bodies as a step starts: the step that found the block asleep skipped it.
+    EXPECT_EQ(joints.solved_joints(), 0u);
+    const double y = dBodyGetPosition(block)[1];
+    const PerDof<double> forces = joints[0].forces();
+    for (int i = 0; i < 40; ++i) {
+        joints.step(kDt, OdePlasticJoints::Stepper::Exact);
+        ASSERT_EQ(joints.solved_joints(), 0u) << "asleep, step " << i;
+        ASSERT_FALSE(joints[0].solved());
+    }
+    EXPECT_EQ(dBodyGetPosition(block)[1], y);
+    EXPECT_EQ(joints[0].forces(), forces);                // no settle: what the rows last applied
+    EXPECT_NEAR(forces[index(Dof::N)], kMass * kG, 1e-6);  // holding the weight
+    EXPECT_EQ(joints[0].law().plastic_displacement(), 0.0);
+    EXPECT_NEAR(joints[0].time(), (steps + 40) * kDt, 1e-12);
+
+    dBodyEnable(block);
+    const int flowing = 30;
+    for (int i = 0; i < flowing; ++i) {
+        dBodyAddForce(block, 0, -push, 0);
+        joints.step(kDt, OdePlasticJoints::Stepper::Exact);
+        ASSERT_EQ(joints.solved_joints(), 1u) << "awake, step " << i;
+    }
+    const double a = (kMass * kG + push - F) / kMass;
+    const double expected = 0.5 * a * kDt * kDt * flowing * (flowing + 1);
+    EXPECT_NEAR(y - dBodyGetPosition(block)[1], expected, 1e-9);
+    EXPECT_NEAR(joints[0].law().plastic_displacement(), expected, 1e-9);
+}
+
+// A sleeping joint that is severed (a member removed) still breaks at the end of the next step: the
+// callback fires once, at that time, and the block wakes and falls.
+TEST(OdeLifecycle, ASleepingJointBreaksWhenSevered) {
+    OdeWorld ode;
+    dWorldSetAutoDisableFlag(ode.world, 1);
+    const dBodyID block = ode.box(-0.5);
+    OdePlasticJoints joints(ode.world);
+    joints.add(nullptr, block, Pose{}, axial(2.0 * kMass * kG));
+    std::vector<double> breaks;
+    joints[0].on_break([&](const JointBreak& b) { breaks.push_back(b.time); });
+    int steps = 0;
+    for (; steps < 100 && dBodyIsEnabled(block); ++steps) joints.step(kDt, OdePlasticJoints::Stepper::Exact);
+    ASSERT_FALSE(dBodyIsEnabled(block));
+    joints[0].sever();
+    joints.step(kDt, OdePlasticJoints::Stepper::Exact);
+    ASSERT_EQ(breaks.size(), 1u);
+    EXPECT_NEAR(breaks[0], (steps + 1) * kDt, 1e-12);
+    EXPECT_TRUE(dBodyIsEnabled(block));
+    const double y = dBodyGetPosition(block)[1];
+    for (int i = 0; i < 10; ++i) joints.step(kDt, OdePlasticJoints::Stepper::Exact);
+    EXPECT_NEAR(y - dBodyGetPosition(block)[1], 0.5 * kG * kDt * kDt * 10 * 11, 1e-9);  // free fall from rest
+    EXPECT_EQ(breaks.size(), 1u);
 }
 #endif
 

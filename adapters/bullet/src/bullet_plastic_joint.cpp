@@ -97,9 +97,35 @@ void BasicBulletPlasticJoint<Constraint>::plan(double dt, const JointFrameState&
 }
 
 template <class Constraint>
+bool BasicBulletPlasticJoint<Constraint>::asleep() const {
+    // Bullet puts a whole island to sleep at once and solves no constraint of a sleeping island; a
+    // static or kinematic body is in no island.
+    return !b_.isActive() && (!a_ || a_->isStaticOrKinematicObject() || !a_->isActive());
+}
+
+template <class Constraint>
+bool BasicBulletPlasticJoint<Constraint>::act_on(JointEvent event) {
+    switch (event) {
+        case JointEvent::Broke:
+            wake();
+            constraint_->setEnabled(false);  // broken stays broken: nothing re-enables it
+            leave_world();                   // and its bodies collide again
+            return false;
+        case JointEvent::Yielded:
+        case JointEvent::AtCapacity: wake(); return true;
+        case JointEvent::None: return true;
+    }
+    return true;
+}
+
+template <class Constraint>
 void BasicBulletPlasticJoint<Constraint>::updateAction(btCollisionWorld*, btScalar dt) {
-    if (driver_.broken()) {
-        driver_.settle({}, {}, dt);  // keeps the clock
+    solved_ = !driver_.broken() && !asleep();
+    if (!solved_) {
+        // Broken, or its island asleep: nothing moved and no row acted, so the law stays as it is
+        // (the clock runs on) and the rows planned for this step hold for the next.
+        act_on(driver_.idle(dt));
+        note_step_start();
         return;
     }
     const WorldLoad load{to_vec3(feedback_.m_appliedForceBodyB), to_vec3(feedback_.m_appliedTorqueBodyB)};
@@ -110,16 +136,7 @@ void BasicBulletPlasticJoint<Constraint>::updateAction(btCollisionWorld*, btScal
     }
     const JointFrameState state = bullet_rows::measure(*constraint_);  // the end of this step is the start of the next
     const PerDof<double> forces = joint_frame_loads(load, planned_centre_of_b_, planned_axes_);
-    switch (driver_.settle(forces, state.positions, dt, bullet_rows::corrected_motion(*constraint_))) {
-        case JointEvent::Broke:
-            wake();
-            constraint_->setEnabled(false);  // broken stays broken: nothing re-enables it
-            leave_world();                   // and its bodies collide again
-            return;
-        case JointEvent::Yielded:
-        case JointEvent::AtCapacity: wake(); break;
-        case JointEvent::None: break;
-    }
+    if (!act_on(driver_.settle(forces, state.positions, dt, bullet_rows::corrected_motion(*constraint_)))) return;
     plan(dt, state);
 }
 

@@ -1,6 +1,8 @@
 #include "plascap/adapters/ode_plastic_joint.hpp"
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 #include "plascap/adapters/joint_loads.hpp"
 #include "plascap/adapters/prefetch.hpp"
@@ -73,7 +75,31 @@ OdePlasticJoint::OdePlasticJoint(dWorldID world, dBodyID a, dBodyID b, const Pos
 
 OdePlasticJoint::~OdePlasticJoint() { dJointDestroy(rows_); }
 
-void OdePlasticJoint::engage(double now) { driver_.engage(measure().positions, now); }
+void OdePlasticJoint::engage(double now) {
+    driver_.engage(measure().positions, now);
+    mark_feedback_unwritten();
+}
+
+// A NaN with a payload of plascap's own: ODE's arithmetic makes NaNs with its CPU's default payload,
+// so it never writes this one.
+static_assert(sizeof(dReal) == sizeof(std::uint64_t), "plascap's ODE adapter needs ODE in double precision");
+constexpr std::uint64_t kUnwrittenBits = 0x7ff8'0000'5e1e'e9edULL;
+
+void OdePlasticJoint::mark_feedback_unwritten() { std::memcpy(&feedback_.f1[0], &kUnwrittenBits, sizeof(dReal)); }
+
+bool OdePlasticJoint::stepped() const {
+    std::uint64_t bits;
+    std::memcpy(&bits, &feedback_.f1[0], sizeof bits);
+    return bits != kUnwrittenBits;
+}
+
+JointEvent OdePlasticJoint::idle(double dt) { return act_on(driver_.idle(dt)); }
+
+JointEvent OdePlasticJoint::act_on(JointEvent event) {
+    if (event != JointEvent::None) wake();
+    if (event == JointEvent::Broke) dJointDisable(rows_);  // broken stays broken
+    return event;
+}
 
 JointFrameState OdePlasticJoint::measure() const {
     const Pose on_a = a_ ? compose(pose_of(a_), frame_on_a_) : frame_on_a_;
@@ -115,7 +141,8 @@ void OdePlasticJoint::wake() {
 }
 
 JointEvent OdePlasticJoint::after_step(double dt) {
-    if (driver_.broken()) return driver_.settle({}, {}, dt);  // None; keeps the clock
+    solved_ = !driver_.broken() && stepped();
+    if (!solved_) return idle(dt);  // broken: None, keeps the clock
     return settle(measure(), dt);
 }
 
@@ -125,13 +152,15 @@ JointEvent OdePlasticJoint::settle(const JointFrameState& state, double dt) {
     const WorldLoad on_a{{feedback_.f2[0], feedback_.f2[1], feedback_.f2[2]}, {feedback_.t2[0], feedback_.t2[1], feedback_.t2[2]}};
     if (rows_work_.counting()) rows_work_.step_ends(on_b, on_a, body_velocity(b_), a_body_velocity(), dt);
     const JointEvent event = driver_.settle(rows_->forces_on_b(on_b), state.positions, dt);
-    if (event != JointEvent::None) wake();
-    if (event == JointEvent::Broke) dJointDisable(rows_);  // broken stays broken
-    return event;
+    mark_feedback_unwritten();  // read: a step that leaves it so did not solve the joint
+    return act_on(event);
 }
 
 OdePlasticJoint::Settled OdePlasticJoint::after_step_and_plan(double dt) {
-    if (driver_.broken()) return {driver_.settle({}, {}, dt), true};  // None; before_step has nothing to do
+    solved_ = !driver_.broken() && stepped();
+    if (driver_.broken()) return {idle(dt), true};  // None; before_step has nothing to do
+    // Not solved (asleep): nothing moved, so the rows planned for this step of dt hold for the next.
+    if (!solved_) return {idle(dt), driver_.broken() || !rows_work_.counting()};
     const JointFrameState state = measure();  // the end of this step is the start of the next
     const JointEvent event = settle(state, dt);
     if (driver_.broken()) return {event, true};

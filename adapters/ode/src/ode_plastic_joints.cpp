@@ -47,6 +47,7 @@ void OdePlasticJoints::step(double dt, Stepper stepper) {
         dWorldStep(world_, dt);
     }
     book_contact_work(dt);
+    solved_joints_ = 0;
     for (std::size_t i = 0; i < joints_.size(); ++i) {
         prefetch_ahead_of(i, false);
         Entry& e = joints_[i];
@@ -55,6 +56,7 @@ void OdePlasticJoints::step(double dt, Stepper stepper) {
         const OdePlasticJoint::Settled settled =
             dt_repeats ? e.joint->after_step_and_plan(dt) : OdePlasticJoint::Settled{e.joint->after_step(dt), false};
         e.ready = settled.ready;
+        solved_joints_ += e.joint->solved() ? 1 : 0;
         if (settled.event == JointEvent::Broke && e.joint->body_a())
             joined_.erase(joined_.find(std::minmax(e.joint->body_a(), e.joint->body_b())));
     }

@@ -9,8 +9,9 @@
 // as a btActionInterface, it reads the joint feedback (world frame, torque about b's centre of mass)
 // and hands it to the engine-neutral PlasticJointDriver, which settles the law and plans the next
 // step's rows. A joint that yields or breaks wakes its bodies (a slow plastic flow is never frozen by
-// Bullet's sleeping); a broken joint leaves the world, so its bodies collide again, and calls the
-// break callback. Destroying an attached joint detaches it.
+// Bullet's sleeping); a joint whose island sleeps is not settled or planned until it wakes; a broken
+// joint leaves the world, so its bodies collide again, and calls the break callback. Destroying an
+// attached joint detaches it.
 #include <btBulletDynamicsCommon.h>
 
 #include <optional>
@@ -53,6 +54,9 @@ public:
     // The generalised forces the rows applied to b during the last step [N, N·m].
     const PerDof<double>& forces() const { return driver_.forces(); }
     double time() const { return driver_.time(); }
+    // Whether Bullet solved the joint in the last step: false where its island slept through it (the
+    // joint then costs no settle and no plan), once it is broken, and before it is attached.
+    bool solved() const { return solved_; }
     // From now on, count the work the rows' velocity solve does on the two bodies (rows_work.hpp; the
     // split-impulse pushes are not in it): rows_work() [J]. Off by default (about 1 % of a joint's cost).
     void count_rows_work() { rows_work_.start_counting(); }
@@ -63,6 +67,9 @@ private:
     void plan(double dt, const JointFrameState& state);
     void wake();
     void leave_world();
+    bool asleep() const;  // its bodies' island sleeps: Bullet did not solve it
+    // Wakes the bodies on any event; a broken joint leaves the world. False once broken.
+    bool act_on(JointEvent event);
 
     btRigidBody* a_;
     btRigidBody& b_;
@@ -77,6 +84,7 @@ private:
     Vec3 planned_centre_of_b_{};
     btDynamicsWorld* world_ = nullptr;  // while attached
     bool constraint_in_world_ = false;  // until it breaks
+    bool solved_ = false;
 };
 
 extern template class BasicBulletPlasticJoint<BulletPlasticConstraint>;

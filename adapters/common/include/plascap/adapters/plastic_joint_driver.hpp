@@ -71,6 +71,11 @@ public:
     JointEvent settle(const PerDof<double>& forces_on_b, const PerDof<double>& positions, double dt,
                       const PerDof<double>& corrected_motion = {});
 
+    // A step the engine did not solve the joint in (its bodies asleep: their island was not
+    // stepped): nothing moved and no row acted, so the law stays as it is — only the clock runs on,
+    // and a severed joint breaks. The rows planned for the joint stay valid for a next step of dt.
+    JointEvent idle(double dt);
+
     // The joint breaks at the end of the next step whatever its load (a member removed): settle()
     // then reports Broke, and the adapter drops its rows as for any break.
     void sever() { sever_ = true; }
@@ -92,6 +97,8 @@ private:
         }
         return true;
     }
+
+    JointEvent report_break();  // calls on_break_; returns Broke
 
     PlasticJointLaw law_;
     bool springs_ = false;  // a plastic dof has a stiffness

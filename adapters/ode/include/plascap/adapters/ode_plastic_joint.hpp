@@ -10,7 +10,8 @@
 // gradients. The joint's feedback (dJointFeedback, world frame, torque about b's centre) is handed
 // to the engine-neutral PlasticJointDriver, which settles the law and plans the rows. A joint that
 // yields or breaks enables (wakes) its bodies; a broken joint is disabled for good, and it calls
-// its break callback.
+// its break callback. A joint whose bodies sleep (ODE's auto-disable) is not settled or planned
+// while ODE skips their island: its law waits as it was, and its rows as they were planned.
 //
 // Use OdePlasticJoints (ode_plastic_joints.hpp): one call per step for every joint of a world. By
 // hand: construct after the bodies; engage(now) when the joint takes hold (its positions then are
@@ -66,6 +67,10 @@ public:
     PerDof<double> positions() const { return measure().positions; }
     const PerDof<double>& forces() const { return driver_.forces(); }
     double time() const { return driver_.time(); }
+    // Whether ODE solved the joint in the last step: false where its bodies slept through it (ODE,
+    // with auto-disable on, skips a disabled island: the joint then costs no settle and no plan),
+    // once it is broken, and before it takes hold.
+    bool solved() const { return solved_; }
     // From now on, count the work the rows do on the two bodies (rows_work.hpp): rows_work() [J].
     // Off by default (about 1 % of a joint's cost).
     void count_rows_work() { rows_work_.start_counting(); }
@@ -87,6 +92,15 @@ private:
     JointEvent settle(const JointFrameState& state, double dt);
     std::optional<BodyVelocity> a_body_velocity() const;  // none when b is joined to the world
     void wake();
+    // ODE writes a joint's feedback only in a step that solves it: one whose bodies sleep (auto-
+    // disabled) is skipped with their island. A value ODE never writes, put in the feedback once
+    // it is read, tells such a step: stepped() is false after it.
+    void mark_feedback_unwritten();
+    bool stepped() const;
+    // A step that did not solve the joint (PlasticJointDriver::idle).
+    JointEvent idle(double dt);
+    // Wakes the bodies on any event, and disables the rows of a broken joint.
+    JointEvent act_on(JointEvent event);
 
     dBodyID a_, b_;
     Pose frame_on_a_, frame_on_b_;  // in a's and b's body coordinates (a = world: world coordinates)
@@ -94,6 +108,7 @@ private:
     dJointFeedback feedback_{};
     PlasticJointDriver driver_;
     RowsWork rows_work_;
+    bool solved_ = false;
 };
 
 }  // namespace plascap

@@ -60,6 +60,9 @@ public:
     double contact_work() const { return contact_work_; }
 
     double time() const { return time_; }  // [s], the sum of the steps taken
+    // How many joints the last step solved (OdePlasticJoint::solved): those whose bodies slept, broken
+    // ones and ones yet to take hold cost a glance, not a settle and a plan.
+    std::size_t solved_joints() const { return solved_joints_; }
     std::size_t size() const { return joints_.size(); }
     OdePlasticJoint& operator[](std::size_t i) { return *joints_[i].joint; }
     const OdePlasticJoint& operator[](std::size_t i) const { return *joints_[i].joint; }
@@ -91,6 +94,7 @@ private:
     std::deque<Contact> contacts_;  // those collide() made for the coming step
     double contact_work_ = 0.0;
     double time_ = 0.0;
+    std::size_t solved_joints_ = 0;
     double last_dt_ = std::numeric_limits<double>::quiet_NaN();  // the dt of the last step; NaN before the first
 };
 
