@@ -1,7 +1,8 @@
 // The Bullet adapter's cost (issue 16): one world step with n plastic joints against the same scene
 // with n btFixedConstraint, timed interleaved with it (counter vs_rigid; goal ≤ 1.15 for rigid-plastic
 // and elastic-plastic joints, one solve and per island), and the cost per joint from 100 to 10,000
-// joints (ns_per_joint). Run: build/bench/bench_bullet_joints (docs/adapters.md, "Cost").
+// joints (ns_per_joint); Sleeping: rigid-plastic joints whose bodies all sleep. Run:
+// build/bench/bench_bullet_joints (docs/adapters.md, "Cost").
 #include <benchmark/benchmark.h>
 
 #include <BulletCollision/CollisionDispatch/btSimulationIslandManager.h>
@@ -134,6 +135,47 @@ BENCHMARK(Fixed)->ArgNames({"joints", "split"})->Apply([](auto* b) { sizes(b, fa
 BENCHMARK(Plascap)->ArgNames({"elastic", "joints", "split"})->Apply([](auto* b) { sizes(b, true); });
 BENCHMARK(PlascapCold)->ArgNames({"elastic", "joints", "split"})->Apply([](auto* b) { sizes(b, true); });
 BENCHMARK(Spring2)->ArgNames({"elastic", "joints", "split"})->Apply([](auto* b) { sizes(b, true); });
+
+bool any_active(const HangingBoxes& scene) {
+    for (const auto& box : scene.boxes)
+        if (box->body().isActive()) return true;
+    return false;
+}
+
+// Every box asleep: both worlds' boxes allowed to sleep (BulletBox forbids it), each world stepped
+// until none is active (Bullet: 2 s under its sleeping speeds), with rigid-plastic joints, which
+// hold the boxes still. A plastic joint whose island sleeps costs a glance, no settle and no plan
+// (BulletPlasticJoint::solved; counter `solved`: joints the last timed step solved, 0 here).
+// Arguments: joints, split islands.
+void Sleeping(benchmark::State& state) {
+    const int n = static_cast<int>(state.range(0));
+    const bool split = state.range(1) == 1;
+    HangingBoxes rigid(n, split, plascap::BulletSolverKind::Bullet);
+    FixedJoints fixed(rigid);
+    HangingBoxes scene(n, split);
+    std::vector<std::unique_ptr<plascap::BulletPlasticJoint>> joints;
+    for (int i = 0; i < n; ++i) {
+        joints.push_back(std::make_unique<plascap::BulletPlasticJoint>(nullptr, scene.boxes[i]->body(), scene.anchor(i),
+                                                                       all_six_plastic(false)));
+        joints.back()->attach(scene.world.world(), kDt);
+    }
+    for (HangingBoxes* boxes : {&rigid, &scene})
+        for (auto& box : boxes->boxes) box->body().forceActivationState(ACTIVE_TAG);
+    for (int i = 0; i < 400 && (any_active(rigid) || any_active(scene)); ++i) {
+        rigid.world.step(kDt);
+        scene.world.step(kDt);
+    }
+    if (any_active(rigid) || any_active(scene)) {
+        state.SkipWithError("the hanging boxes did not fall asleep in 400 steps");
+    } else {
+        bench::time_steps(state, [&] { scene.world.step(kDt); }, [&] { rigid.world.step(kDt); }, n);
+        int solved = 0;
+        for (const auto& joint : joints) solved += joint->solved() ? 1 : 0;
+        state.counters["solved"] = solved;
+    }
+    joints.clear();
+}
+BENCHMARK(Sleeping)->ArgNames({"joints", "split"})->Apply([](auto* b) { sizes(b, false); });
 
 // Box against coupled yield: the cases of joint_yield_settings.hpp, 1,000 joints, one solve.
 void YieldSurfaces(benchmark::State& state) {

@@ -1,7 +1,7 @@
 // The ODE adapter's cost (issue 16): one dWorldQuickStep with n plastic joints against the same
 // scene with n dJointTypeFixed, timed interleaved with it (counter vs_rigid; goal ≤ 1.3 for hinges and
 // for all six dofs plastic), and the cost per joint from 100 to 10,000 joints (ns_per_joint). PlasticAxis:
-// one plastic rotation, five rigid dofs.
+// one plastic rotation, five rigid dofs. Sleeping: rigid-plastic joints whose bodies all sleep.
 // Run: build/bench/bench_ode_joints (docs/adapters.md, "Cost").
 #include <benchmark/benchmark.h>
 
@@ -92,19 +92,63 @@ void step_with_joints(benchmark::State& state, int n, const plascap::PlasticJoin
 // Capacities well above the load; elastic = 1 gives every plastic dof a stiffness (explicit spring
 // rows: 5,000 N/m, a 2 cm sag, and 100 N·m/rad, as bench_bullet_joints); six = 1: all six dofs
 // plastic, 0: translations rigid (a plastic hinge). Includes the adapter's planning and settling.
-void PlasticJoints(benchmark::State& state) {
+plascap::PlasticJointSettings plastic_settings(bool elastic, bool six) {
     plascap::PlasticJointSettings settings;
     for (plascap::Dof dof : plascap::kAllDofs) {
-        const bool plastic = state.range(1) == 1 || plascap::is_rotation(dof);
+        const bool plastic = six || plascap::is_rotation(dof);
         settings.modes[plascap::index(dof)] = plastic ? plascap::DofMode::Plastic : plascap::DofMode::Rigid;
         settings.laws[plascap::index(dof)] = plascap::DofLaw{1e5, 1e5, std::nullopt};
-        if (state.range(0) == 1) settings.laws[plascap::index(dof)].stiffness = plascap::is_rotation(dof) ? 100.0 : 5000.0;
+        if (elastic) settings.laws[plascap::index(dof)].stiffness = plascap::is_rotation(dof) ? 100.0 : 5000.0;
     }
-    step_with_joints(state, static_cast<int>(state.range(2)), settings);
+    return settings;
+}
+
+void PlasticJoints(benchmark::State& state) {
+    step_with_joints(state, static_cast<int>(state.range(2)), plastic_settings(state.range(0) == 1, state.range(1) == 1));
 }
 BENCHMARK(PlasticJoints)
     ->ArgNames({"elastic", "six", "joints"})
     ->ArgsProduct({{0, 1}, {0, 1}, {100, 1000, 10000}})
+    ->Unit(benchmark::kMicrosecond);
+
+bool any_awake(const HangingBoxes& scene) {
+    for (dBodyID box : scene.boxes)
+        if (dBodyIsEnabled(box)) return true;
+    return false;
+}
+
+// Every box asleep: ODE's auto-disable on in both worlds, each stepped until no body is enabled
+// (rigid-plastic joints, which hold the boxes still; springs would swing on). ODE then skips every
+// island — the rigid world's step is little more than its search for them — and a plastic joint
+// whose bodies sleep costs a glance, no settle and no plan (OdePlasticJoint::solved; counter
+// `solved`: joints the last timed step solved, 0 here). six = 1: all six dofs plastic, 0: hinges.
+void Sleeping(benchmark::State& state) {
+    const int n = static_cast<int>(state.range(1));
+    HangingBoxes rigid(n);
+    fix_all(rigid);
+    HangingBoxes scene(n);
+    auto joints = std::make_unique<plascap::OdePlasticJoints>(scene.world);
+    const plascap::PlasticJointSettings settings = plastic_settings(false, state.range(0) == 1);
+    for (int i = 0; i < n; ++i) joints->add(nullptr, scene.boxes[i], scene.anchor(i), settings);
+    for (HangingBoxes* boxes : {&rigid, &scene}) {
+        dWorldSetAutoDisableFlag(boxes->world, 1);
+        for (dBodyID box : boxes->boxes) dBodySetAutoDisableDefaults(box);  // a body takes the world's when made
+    }
+    for (int i = 0; i < 300 && (any_awake(rigid) || any_awake(scene)); ++i) {
+        dWorldQuickStep(rigid.world, kDt);
+        joints->step(kDt);
+    }
+    if (any_awake(rigid) || any_awake(scene)) {
+        state.SkipWithError("the hanging boxes did not fall asleep in 300 steps");
+    } else {
+        bench::time_steps(state, [&] { joints->step(kDt); }, [&] { dWorldQuickStep(rigid.world, kDt); }, n);
+        state.counters["solved"] = static_cast<double>(joints->solved_joints());
+    }
+    joints.reset();  // before the world goes
+}
+BENCHMARK(Sleeping)
+    ->ArgNames({"six", "joints"})
+    ->ArgsProduct({{0, 1}, {100, 1000, 10000}})
     ->Unit(benchmark::kMicrosecond);
 
 // A one-axis plastic hinge: Mz plastic, the other five dofs rigid: six rows in one joint, as a
