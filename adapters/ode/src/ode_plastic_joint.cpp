@@ -158,9 +158,12 @@ JointEvent OdePlasticJoint::settle(const JointFrameState& state, double dt) {
 
 OdePlasticJoint::Settled OdePlasticJoint::after_step_and_plan(double dt) {
     solved_ = !driver_.broken() && stepped();
-    if (driver_.broken()) return {idle(dt), true};  // None; before_step has nothing to do
-    // Not solved (asleep): nothing moved, so the rows planned for this step of dt hold for the next.
-    if (!solved_) return {idle(dt), driver_.broken() || !rows_work_.counting()};
+    if (!solved_) {
+        // Broken (before_step has nothing to do), or asleep: nothing moved, so the rows planned for
+        // this step of dt hold for the next — unless they count their work, which needs before_step.
+        const JointEvent event = idle(dt);
+        return {event, driver_.broken() || !rows_work_.counting()};
+    }
     const JointFrameState state = measure();  // the end of this step is the start of the next
     const JointEvent event = settle(state, dt);
     if (driver_.broken()) return {event, true};
