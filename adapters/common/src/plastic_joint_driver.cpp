@@ -23,20 +23,19 @@ JointEvent PlasticJointDriver::settle(const PerDof<double>& forces_on_b, const P
     forces_ = forces_on_b;
     const double before = law_.plastic_displacement() + law_.plastic_rotation();
     law_.settle(positions, forces_, time_, corrected_motion);
-    if (sever_) law_.sever(time_);
-    if (law_.broken()) return report_break();
+    if (break_if_due() == JointEvent::Broke) return JointEvent::Broke;
     if (law_.plastic_displacement() + law_.plastic_rotation() > before) return JointEvent::Yielded;
     return law_.at_capacity() ? JointEvent::AtCapacity : JointEvent::None;
 }
 
 JointEvent PlasticJointDriver::idle(double dt) {
     time_ += dt;
-    if (law_.broken() || !sever_) return JointEvent::None;
-    law_.sever(time_);
-    return report_break();
+    return law_.broken() ? JointEvent::None : break_if_due();  // a break is reported once
 }
 
-JointEvent PlasticJointDriver::report_break() {
+JointEvent PlasticJointDriver::break_if_due() {
+    if (sever_) law_.sever(time_);
+    if (!law_.broken()) return JointEvent::None;
     if (on_break_) on_break_({time_, law_.plastic_displacement(), law_.plastic_rotation(), law_.dissipated()});
     return JointEvent::Broke;
 }

@@ -93,6 +93,11 @@ bool OdePlasticJoint::stepped() const {
     return bits != kUnwrittenBits;
 }
 
+bool OdePlasticJoint::note_solved() {
+    solved_ = !driver_.broken() && stepped();
+    return solved_;
+}
+
 JointEvent OdePlasticJoint::idle(double dt) { return act_on(driver_.idle(dt)); }
 
 JointEvent OdePlasticJoint::act_on(JointEvent event) {
@@ -141,8 +146,7 @@ void OdePlasticJoint::wake() {
 }
 
 JointEvent OdePlasticJoint::after_step(double dt) {
-    solved_ = !driver_.broken() && stepped();
-    if (!solved_) return idle(dt);  // broken: None, keeps the clock
+    if (!note_solved()) return idle(dt);  // broken: None, keeps the clock
     return settle(measure(), dt);
 }
 
@@ -157,8 +161,7 @@ JointEvent OdePlasticJoint::settle(const JointFrameState& state, double dt) {
 }
 
 OdePlasticJoint::Settled OdePlasticJoint::after_step_and_plan(double dt) {
-    solved_ = !driver_.broken() && stepped();
-    if (!solved_) {
+    if (!note_solved()) {
         // Broken (before_step has nothing to do), or asleep: nothing moved, so the rows planned for
         // this step of dt hold for the next — unless they count their work, which needs before_step.
         const JointEvent event = idle(dt);

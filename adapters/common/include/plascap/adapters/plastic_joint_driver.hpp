@@ -98,7 +98,9 @@ private:
         return true;
     }
 
-    JointEvent report_break();  // calls on_break_; returns Broke
+    // After a step, settled or idle: a severed joint breaks; a broken law calls on_break_ and
+    // reports Broke, else None.
+    JointEvent break_if_due();
 
     PlasticJointLaw law_;
     bool springs_ = false;  // a plastic dof has a stiffness

@@ -97,6 +97,8 @@ private:
     // it is read, tells such a step: stepped() is false after it.
     void mark_feedback_unwritten();
     bool stepped() const;
+    // After a step: records and returns whether ODE solved the joint in it (solved()).
+    bool note_solved();
     // A step that did not solve the joint (PlasticJointDriver::idle).
     JointEvent idle(double dt);
     // Wakes the bodies on any event, and disables the rows of a broken joint.
