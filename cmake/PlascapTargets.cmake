@@ -14,6 +14,11 @@ function(plascap_library target)
     $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>
     $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
   plascap_warnings(${target})
+  # A shared library's calls between its own exported functions go through the PLT and cannot be
+  # inlined, because by default the ELF rules let another library interpose them (GCC manual,
+  # -fsemantic-interposition). plascap does not support interposing its functions, so let the
+  # compiler bind them locally: the ODE joint's step calls a dozen small ones (docs/adapters.md "Cost").
+  target_compile_options(${target} PRIVATE -fno-semantic-interposition)
   install(TARGETS ${target} EXPORT plascapTargets)
   install(DIRECTORY include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endfunction()
