@@ -34,21 +34,32 @@ Pose pose_of(dBodyID body) {
 BodyInertia inertia_of(dBodyID body) {
     dMass m;
     dBodyGetMass(body, &m);
-    const Pose p = pose_of(body);
-    const Mat3& r = p.rotation;
-    // I_body⁻¹ by Cramer's rule (adjugate / det), one division for all nine; ODE keeps I as 3 rows of 4.
-    const double a = m.I[0], b = m.I[1], c = m.I[2], d = m.I[4], e = m.I[5], f = m.I[6], g = m.I[8], h = m.I[9], k = m.I[10];
-    const double co_a = e * k - f * h, co_b = f * g - d * k, co_c = d * h - e * g;
+    // I_body⁻¹ by Cramer's rule (adjugate / det), one division for all; ODE keeps I as 3 rows of 4,
+    // symmetric (dMassCheck), so its inverse is too and six entries make it: s[i][j] for i ≤ j.
+    const double a = m.I[0], b = m.I[1], c = m.I[2], e = m.I[5], f = m.I[6], k = m.I[10];
+    const double co_a = e * k - f * f, co_b = f * c - b * k, co_c = b * f - e * c;
     const double inv_det = 1.0 / (a * co_a + b * co_b + c * co_c);
-    const Mat3 inverse_body = {{{co_a * inv_det, (c * h - b * k) * inv_det, (b * f - c * e) * inv_det},
-                                {co_b * inv_det, (a * k - c * g) * inv_det, (c * d - a * f) * inv_det},
-                                {co_c * inv_det, (b * g - a * h) * inv_det, (a * e - b * d) * inv_det}}};
-    BodyInertia inertia;
-    inertia.inverse_mass = 1.0 / m.mass;
+    const double s00 = co_a * inv_det, s01 = co_b * inv_det, s02 = co_c * inv_det;
+    const double s11 = (a * k - c * c) * inv_det, s12 = (c * b - a * f) * inv_det, s22 = (a * e - b * b) * inv_det;
     // I_world⁻¹ = R·I_body⁻¹·Rᵀ (Baraff, "An Introduction to Physically Based Modeling: Rigid Body
-    // Simulation I", eq. 2-37ff: I = R·I_body·Rᵀ, so its inverse turns the same way).
-    inertia.inverse_inertia_world = multiply(multiply(r, inverse_body), transpose(r));
-    inertia.centre = p.origin;
+    // Simulation I", eq. 2-37ff: I = R·I_body·Rᵀ, so its inverse turns the same way): symmetric
+    // again, so the upper triangle is computed and mirrored. R is ODE's, 3 rows of 4.
+    const dReal* rotation = dBodyGetRotation(body);
+    const Mat3 r = {{{rotation[0], rotation[1], rotation[2]}, {rotation[4], rotation[5], rotation[6]},
+                     {rotation[8], rotation[9], rotation[10]}}};
+    const Mat3 rs = {{{r[0][0] * s00 + r[0][1] * s01 + r[0][2] * s02, r[0][0] * s01 + r[0][1] * s11 + r[0][2] * s12,
+                       r[0][0] * s02 + r[0][1] * s12 + r[0][2] * s22},
+                      {r[1][0] * s00 + r[1][1] * s01 + r[1][2] * s02, r[1][0] * s01 + r[1][1] * s11 + r[1][2] * s12,
+                       r[1][0] * s02 + r[1][1] * s12 + r[1][2] * s22},
+                      {r[2][0] * s00 + r[2][1] * s01 + r[2][2] * s02, r[2][0] * s01 + r[2][1] * s11 + r[2][2] * s12,
+                       r[2][0] * s02 + r[2][1] * s12 + r[2][2] * s22}}};  // R·I_body⁻¹
+    const double w00 = dot(rs[0], r[0]), w01 = dot(rs[0], r[1]), w02 = dot(rs[0], r[2]);
+    const double w11 = dot(rs[1], r[1]), w12 = dot(rs[1], r[2]), w22 = dot(rs[2], r[2]);
+    BodyInertia inertia;
+    inertia.inverse_inertia_world = {{{w00, w01, w02}, {w01, w11, w12}, {w02, w12, w22}}};
+    inertia.inverse_mass = 1.0 / m.mass;
+    const dReal* x = dBodyGetPosition(body);
+    inertia.centre = {x[0], x[1], x[2]};
     return inertia;
 }
 
@@ -126,12 +137,10 @@ void OdePlasticJoint::plan(const JointFrameState& state, double dt) {
         driver_.plan(state, dt, [&] {
             return std::pair{inertia_of(b_), a_ ? std::optional<BodyInertia>(inertia_of(a_)) : std::nullopt};
         });
-    PerDof<std::optional<OdeRowTarget>> targets;
-    for (std::size_t i = 0; i < kAllDofs.size(); ++i) {
-        targets[i] = row_target(driver_.law().mode(kAllDofs[i]), commands[i], state.positions[i],
-                                driver_.engaged_positions()[i], dt);
-    }
-    rows_->set_rows(state, targets);
+    rows_->set_rows(state, [&](std::size_t i) {
+        return row_target(driver_.law().mode(kAllDofs[i]), commands[i], state.positions[i],
+                          driver_.engaged_positions()[i], dt);
+    });
 }
 
 void OdePlasticJoint::prefetch() const { prefetch_object(this); }
