@@ -86,9 +86,9 @@ TEST(OdeJointObject, ARowHoldsItsBodyAndReportsItsForce) {
     JointFrameState state;
     state.axes.anchor = {0.0, 0.0, 0.0};
     state.axes.translation = {Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1}};
-    PerDof<std::optional<OdeRowTarget>> targets;
-    targets[0] = OdeRowTarget{0.0, -dInfinity, dInfinity};
-    rows->set_rows(state, targets);
+    rows->set_rows(state, [](std::size_t dof) {  // one rigid row, along x
+        return dof == 0 ? std::optional<OdeRowTarget>(OdeRowTarget{0.0, -dInfinity, dInfinity}) : std::nullopt;
+    });
     dBodyAddForce(w.b, 10.0, 4.0, 0.0);  // [N]
     dWorldStep(w.world, 0.01);
     const dReal* v = dBodyGetLinearVel(w.b);

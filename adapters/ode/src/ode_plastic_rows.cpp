@@ -22,16 +22,18 @@ OdePlasticRows* OdePlasticRows::create(dWorldID world, dBodyID b, dBodyID a) {
     return joint;
 }
 
-void OdePlasticRows::set_rows(const JointFrameState& state, const PerDof<std::optional<OdeRowTarget>>& targets) {
+void OdePlasticRows::set_geometry(const JointFrameState& state) {
     dxBody* b = node[0].body;  // ODE's first body
     dxBody* a = node[1].body;  // 0: the world
     axes_ = state.axes;
     lever_b_ = difference(state.axes.anchor, centre_of(b));
     lever_a_ = a ? difference(state.axes.anchor, centre_of(a)) : Vec3{};
-    targets_ = targets;
+}
+
+void OdePlasticRows::count_rows() {
     count_ = 0;
     all_unbounded_ = true;
-    for (const std::optional<OdeRowTarget>& t : targets) {
+    for (const std::optional<OdeRowTarget>& t : targets_) {
         if (!t) continue;
         ++count_;
         all_unbounded_ = all_unbounded_ && t->lower == -dInfinity && t->upper == dInfinity;

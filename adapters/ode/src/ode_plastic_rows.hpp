@@ -35,9 +35,15 @@ public:
     // dJointDestroy(joint) frees it.
     static OdePlasticRows* create(dWorldID world, dBodyID b, dBodyID a);
 
-    // The rows of the next step, for the joint as measured now (state's anchor is b's); no row for
-    // a dof without a target.
-    void set_rows(const JointFrameState& state, const PerDof<std::optional<OdeRowTarget>>& targets);
+    // The rows of the next step, for the joint as measured now (state's anchor is b's): dof i's is
+    // target_of(i), a std::optional<OdeRowTarget>; no row for a dof without one. Written straight
+    // into the joint: a step of 1,000 joints calls this 1,000 times (issue 16, docs/adapters.md "Cost").
+    template <class TargetOf>
+    void set_rows(const JointFrameState& state, TargetOf&& target_of) {
+        set_geometry(state);
+        for (std::size_t i = 0; i < kDofCount; ++i) targets_[i] = target_of(i);
+        count_rows();
+    }
 
     // The generalised forces the rows applied to b in the step they were set for
     // (joint_frame_loads), from what ODE's feedback says they applied (on_b).
@@ -61,6 +67,11 @@ private:
     // is the next whose rows ODE asks for, which then no longer waits on memory (docs/adapters.md,
     // ODE "Cost"). Elsewhere it is a hint for nothing, 9 instructions.
     void load_next_joint() const;
+
+    // set_rows's parts before and after the targets: the axes and levers as measured; how many rows
+    // the targets make, and whether all are unbounded.
+    void set_geometry(const JointFrameState& state);
+    void count_rows();
 
     // The rows of the next step: the joint's axes and levers as measured, and each dof's target.
     JointAxesInWorld axes_{};
