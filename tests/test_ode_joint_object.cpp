@@ -6,6 +6,8 @@
 // (test_plastic_joint_engines.cpp and others).
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
 #include <vector>
 
 #include "../adapters/ode/src/ode_plastic_rows.hpp"
@@ -141,6 +143,83 @@ TEST(OdePlasticRows, CompressionPastItsCapacityFlowsAtThatCapacity) {
     const double a = (3300.0 - 3000.0) / 10.0, h = 1.0 / 240;
     const double expected = a * h * h * n * (n + 1) / 2;
     EXPECT_NEAR(axial_plastic_after_on_ode({{800.0, 60}, {-3300.0, n}}), expected, 0.01 * expected);
+}
+
+// The law plans with each row's effective mass 1/(J·M⁻¹·Jᵀ) (row_effective_mass.hpp), from the
+// inverse inertia in the world the ODE joint forms itself (ode_plastic_joint.cpp). Here the body's
+// inertia is not diagonal in its own frame (a box's, turned by dMassRotate) and the body is turned
+// again in the world, so every entry of I_world⁻¹ counts. The reference inverts I_world = R·I·Rᵀ
+// after turning it (Baraff, "Rigid Body Simulation I", eq. 2-37ff), where the joint turns the
+// inverse: the same matrix by another route. With k = 1, ω·dt = √(J·M⁻¹·Jᵀ)·dt (paper eq. 3.2).
+using M3 = std::array<std::array<double, 3>, 3>;
+
+M3 inverse_by_cofactors(const M3& m) {
+    M3 inv{};
+    const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+                       m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                       m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {  // inv[i][j] = cofactor of m[j][i] / det
+            const int r0 = (j + 1) % 3, r1 = (j + 2) % 3, c0 = (i + 1) % 3, c1 = (i + 2) % 3;
+            inv[i][j] = (m[r0][c0] * m[r1][c1] - m[r0][c1] * m[r1][c0]) / det;
+        }
+    }
+    return inv;
+}
+
+double quadratic(const M3& m, const std::array<double, 3>& v) {
+    double sum = 0.0;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) sum += v[i] * m[i][j] * v[j];
+    return sum;
+}
+
+TEST(OdePlasticJoint, PlansWithTheEffectiveMassOfATurnedBodyWithATurnedInertia) {
+    OdeWorld w;
+    dWorldSetGravity(w.world, 0.0, 0.0, 0.0);
+    dMass mass;
+    dMassSetBoxTotal(&mass, 10.0, 0.2, 1.0, 0.4);
+    dMatrix3 turn_mass, turn_body;
+    dRFromAxisAndAngle(turn_mass, 1.0, 2.0, 0.5, 0.7);
+    dRFromAxisAndAngle(turn_body, -0.3, 1.0, 2.0, 1.9);
+    dMassRotate(&mass, turn_mass);
+    dBodySetMass(w.b, &mass);
+    dBodySetRotation(w.b, turn_body);
+    const std::array<double, 3> centre = {0.1, -0.5, 0.2};
+    dBodySetPosition(w.b, centre[0], centre[1], centre[2]);
+    PlasticJointSettings s;
+    for (Dof dof : kAllDofs) {
+        s.modes[index(dof)] = DofMode::Plastic;
+        s.laws[index(dof)] = {1e6, 1e6, 1.0};  // soft springs: every dof elastic-plastic (ω·dt ≪ 0.25)
+    }
+    OdePlasticJoint joint(w.world, nullptr, w.b, Pose{}, s);  // at the world's origin, on its axes
+    const double dt = 1.0 / 60;
+    joint.engage(0.0);
+    joint.before_step(dt);
+
+    M3 body_inertia{}, r{}, world_inertia{};
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) body_inertia[i][j] = mass.I[4 * i + j], r[i][j] = turn_body[4 * i + j];
+    }
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            for (int k = 0; k < 3; ++k)
+                for (int l = 0; l < 3; ++l) world_inertia[i][j] += r[i][k] * body_inertia[k][l] * r[j][l];
+        }
+    }
+    const M3 inverse = inverse_by_cofactors(world_inertia);
+    const std::array<double, 3> lever = {-centre[0], -centre[1], -centre[2]};  // anchor (origin) − centre
+    for (int i = 0; i < 3; ++i) {
+        std::array<double, 3> axis{};
+        axis[i] = 1.0;
+        const std::array<double, 3> moment = {lever[1] * axis[2] - lever[2] * axis[1],
+                                              lever[2] * axis[0] - lever[0] * axis[2],
+                                              lever[0] * axis[1] - lever[1] * axis[0]};
+        const double translation = 1.0 / mass.mass + quadratic(inverse, moment);
+        const double rotation = quadratic(inverse, axis);
+        EXPECT_NEAR(joint.law().law(kAllDofs[i])->omega_dt(), std::sqrt(translation) * dt, 1e-12 * std::sqrt(translation) * dt) << i;
+        EXPECT_NEAR(joint.law().law(kAllDofs[i + 3])->omega_dt(), std::sqrt(rotation) * dt, 1e-12 * std::sqrt(rotation) * dt) << i;
+    }
 }
 
 }  // namespace

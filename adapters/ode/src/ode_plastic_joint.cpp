@@ -34,8 +34,9 @@ Pose pose_of(dBodyID body) {
 BodyInertia inertia_of(dBodyID body) {
     dMass m;
     dBodyGetMass(body, &m);
-    // I_body⁻¹ by Cramer's rule (adjugate / det), one division for all; ODE keeps I as 3 rows of 4,
-    // symmetric (dMassCheck), so its inverse is too and six entries make it: s[i][j] for i ≤ j.
+    // I_body⁻¹ by Cramer's rule (adjugate / det), one division for all. ODE keeps I as 3 rows of 4,
+    // symmetric (dMassSetParameters takes six values, dMassRotate keeps the symmetry), so its inverse
+    // is too and six entries make it: s[i][j] for i ≤ j.
     const double a = m.I[0], b = m.I[1], c = m.I[2], e = m.I[5], f = m.I[6], k = m.I[10];
     const double co_a = e * k - f * f, co_b = f * c - b * k, co_c = b * f - e * c;
     const double inv_det = 1.0 / (a * co_a + b * co_b + c * co_c);
