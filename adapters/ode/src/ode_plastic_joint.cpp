@@ -42,18 +42,15 @@ BodyInertia inertia_of(dBodyID body) {
     const double inv_det = 1.0 / (a * co_a + b * co_b + c * co_c);
     const double s00 = co_a * inv_det, s01 = co_b * inv_det, s02 = co_c * inv_det;
     const double s11 = (a * k - c * c) * inv_det, s12 = (c * b - a * f) * inv_det, s22 = (a * e - b * b) * inv_det;
+    const Mat3 inverse_body = {{{s00, s01, s02}, {s01, s11, s12}, {s02, s12, s22}}};
     // I_world⁻¹ = R·I_body⁻¹·Rᵀ (Baraff, "An Introduction to Physically Based Modeling: Rigid Body
     // Simulation I", eq. 2-37ff: I = R·I_body·Rᵀ, so its inverse turns the same way): symmetric
-    // again, so the upper triangle is computed and mirrored. R is ODE's, 3 rows of 4.
+    // again, so of (R·I_body⁻¹)·Rᵀ the upper triangle is computed and mirrored. R is ODE's, 3 rows
+    // of 4, read here rather than through pose_of (a Pose built for its rotation: 19 instructions more).
     const dReal* rotation = dBodyGetRotation(body);
     const Mat3 r = {{{rotation[0], rotation[1], rotation[2]}, {rotation[4], rotation[5], rotation[6]},
                      {rotation[8], rotation[9], rotation[10]}}};
-    const Mat3 rs = {{{r[0][0] * s00 + r[0][1] * s01 + r[0][2] * s02, r[0][0] * s01 + r[0][1] * s11 + r[0][2] * s12,
-                       r[0][0] * s02 + r[0][1] * s12 + r[0][2] * s22},
-                      {r[1][0] * s00 + r[1][1] * s01 + r[1][2] * s02, r[1][0] * s01 + r[1][1] * s11 + r[1][2] * s12,
-                       r[1][0] * s02 + r[1][1] * s12 + r[1][2] * s22},
-                      {r[2][0] * s00 + r[2][1] * s01 + r[2][2] * s02, r[2][0] * s01 + r[2][1] * s11 + r[2][2] * s12,
-                       r[2][0] * s02 + r[2][1] * s12 + r[2][2] * s22}}};  // R·I_body⁻¹
+    const Mat3 rs = multiply(r, inverse_body);
     const double w00 = dot(rs[0], r[0]), w01 = dot(rs[0], r[1]), w02 = dot(rs[0], r[2]);
     const double w11 = dot(rs[1], r[1]), w12 = dot(rs[1], r[2]), w22 = dot(rs[2], r[2]);
     BodyInertia inertia;
