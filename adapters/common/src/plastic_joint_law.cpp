@@ -35,7 +35,7 @@ PlasticJointLaw& PlasticJointLaw::operator=(PlasticJointLaw&&) noexcept = defaul
 
 PerDof<ElasticPlasticLaw*> PlasticJointLaw::plastic_laws() {
     PerDof<ElasticPlasticLaw*> laws{};
-    for (std::size_t i = 0; i < kDofCount; ++i) laws[i] = laws_[i] ? &*laws_[i] : nullptr;
+    for (std::size_t i = 0; i < kDofCount; ++i) laws[i] = plastic(i) ? &*laws_[i] : nullptr;
     return laws;
 }
 
@@ -108,7 +108,7 @@ PerDof<std::optional<RowCommand>> PlasticJointLaw::plan(const PerDof<double>& me
         bounds = detail::coupled_hold_bounds(coupling_->condition, coupling_->axes, coupling_->hint, last_loads_,
                                              plastic_laws());
     for (std::size_t i = 0; i < kDofCount; ++i) {
-        if (laws_[i]) commands[i] = laws_[i]->plan(positions[i], dt, effective_masses[i], bounds[i]);
+        if (plastic(i)) commands[i] = laws_[i]->plan(positions[i], dt, effective_masses[i], bounds[i]);
     }
     if (std::optional<RowCommand>& my = commands[index(Dof::My)]; my && euler_rows() && twist_sign(positions) < 0.0) {
         my->velocity = -my->velocity;
@@ -135,12 +135,12 @@ bool PlasticJointLaw::settle(const PerDof<double>& measured, const PerDof<double
     if (euler_rows()) {
         const double cos_twist = std::cos(0.5 * (last_measured_[index(Dof::My)] + measured[index(Dof::My)]));
         for (Dof dof : {Dof::Mx, Dof::Mz}) {
-            if (laws_[index(dof)]) laws_[index(dof)]->set_work_factor(cos_twist);
+            if (plastic(index(dof))) laws_[index(dof)]->set_work_factor(cos_twist);
         }
     }
     track(measured, positions);
     for (std::size_t i = 0; i < kDofCount; ++i) {
-        if (laws_[i]) laws_[i]->settle(positions[i], forces[i], corrected_motion[i]);
+        if (plastic(i)) laws_[i]->settle(positions[i], forces[i], corrected_motion[i]);
         last_loads_[i] = -forces[i];
     }
     if (coupling_)
@@ -157,8 +157,8 @@ bool PlasticJointLaw::settle(const PerDof<double>& measured, const PerDof<double
 void PlasticJointLaw::summarise() {
     summary_ = {};
     for (Dof dof : kAllDofs) {
+        if (!plastic(index(dof))) continue;
         const auto& law = laws_[index(dof)];
-        if (!law) continue;
         (is_rotation(dof) ? summary_.plastic_rotation : summary_.plastic_displacement) += law->accumulated_plastic();
         summary_.at_capacity = summary_.at_capacity || law->at_capacity();
         summary_.near_capacity = summary_.near_capacity || law->near_capacity();
