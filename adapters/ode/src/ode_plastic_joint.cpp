@@ -141,7 +141,7 @@ void OdePlasticJoint::plan(const JointFrameState& state, double dt) {
     });
 }
 
-void OdePlasticJoint::prefetch() const { driver_.law().prefetch_within(this, this + 1); }
+void OdePlasticJoint::prefetch() const { prefetch_object(this); }
 
 void OdePlasticJoint::prefetch_rows() const { prefetch_object(rows_); }
 

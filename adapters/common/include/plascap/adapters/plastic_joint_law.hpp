@@ -8,7 +8,6 @@
 #include "plascap/adapters/dof.hpp"
 #include "plascap/adapters/elastic_plastic_law.hpp"
 #include "plascap/adapters/plastic_joint_settings.hpp"
-#include "plascap/adapters/prefetch.hpp"
 #include "plascap/adapters/row_capabilities.hpp"
 
 namespace plascap {
@@ -69,19 +68,6 @@ public:
     double utilisation() const;
     const PlasticJointSettings& settings() const { return *settings_; }
 
-    // Asks the CPU to load what a step reads and writes of [begin, end), an object that holds this
-    // law (prefetch.hpp): all of it but the law slots of rigid and free dofs, which a step never
-    // touches (184 B each). Inline: a world's loop asks for every joint every step.
-    void prefetch_within(const void* begin, const void* end) const {
-        const void* run = begin;  // the runs of bytes between skipped slots, each in one range
-        for (std::size_t i = 0; i < kDofCount; ++i) {
-            if (plastic(i)) continue;
-            prefetch_range(run, &laws_[i]);
-            run = &laws_[i] + 1;
-        }
-        prefetch_range(run, end);
-    }
-
 private:
     // What the dof laws say after a settle: kept, not recomputed, because the driver and the
     // adapters ask every step for every joint (issue 16: their cost per joint).
@@ -98,8 +84,7 @@ private:
 
     bool euler_rows() const { return rows_.rotations == RotationMeasure::EulerXYZ; }
     // Whether dof i has a law. Read from the modes, not from laws_[i]'s own flag: a step then
-    // never touches the slot of a rigid or free dof, which at 10,000 joints would be memory
-    // traffic for nothing (184 B a slot; docs/adapters.md, ODE "Cost").
+    // never touches the slot of a rigid or free dof (184 B each; docs/adapters.md, ODE "Cost").
     bool plastic(std::size_t i) const { return modes_[i] == DofMode::Plastic; }
 
     // What a coupled yield condition needs beside the dof laws (plastic_joint_law.cpp). Only a joint

@@ -8,7 +8,6 @@
 // __builtin_prefetch is GCC's and Clang's ("Other Built-in Functions", GCC manual): a hint that
 // never faults, so any address may be given.
 #include <cstddef>
-#include <cstdint>
 
 namespace plascap {
 
@@ -44,17 +43,6 @@ void prefetch_bytes(const void* start) {
 template <class T>
 void prefetch_object(const T* object) {
     prefetch_bytes<sizeof(T), PrefetchFor::Writing>(object);
-}
-
-// Loads, for reading and writing, every cache line that holds a byte of [begin, end) — nothing if
-// end ≤ begin. A loop (its length known only at run time): for an object whose parts a step skips,
-// such as the slots of a joint's rigid dofs (plastic_joint_law.hpp).
-inline void prefetch_range(const void* begin, const void* end) {
-    if (!(begin < end)) return;
-    const auto first = reinterpret_cast<std::uintptr_t>(begin) & ~(std::uintptr_t{kCacheLine} - 1);
-#pragma GCC unroll 8
-    for (std::uintptr_t line = first; line < reinterpret_cast<std::uintptr_t>(end); line += kCacheLine)
-        __builtin_prefetch(reinterpret_cast<const void*>(line), static_cast<int>(PrefetchFor::Writing));
 }
 
 }  // namespace plascap

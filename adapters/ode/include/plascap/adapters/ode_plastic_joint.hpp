@@ -54,14 +54,13 @@ public:
     };
     Settled after_step_and_plan(double dt);
     // Ask the CPU to load the joint's state for its coming turn (prefetch.hpp), in two stages:
-    // prefetch() this object (but its rigid and free dofs' law slots, which a step does not touch),
-    // kPrefetchAhead joints ahead; prefetch_rows() its ODE rows, found
+    // prefetch() this object, kPrefetchAhead joints ahead; prefetch_rows() its ODE rows, found
     // through this object, kPrefetchRowsAhead joints ahead — by then this object has arrived, so
     // reading where its rows are does not wait on memory (as it did when both came at once).
     // OdePlasticJoints does both.
     void prefetch() const;
     void prefetch_rows() const;
-    // The bytes the two load at most [B] (all dofs plastic).
+    // The bytes the two load [B].
     static std::size_t state_bytes();
 
     const PlasticJointLaw& law() const { return driver_.law(); }
