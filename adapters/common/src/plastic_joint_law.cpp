@@ -40,8 +40,7 @@ PerDof<ElasticPlasticLaw*> PlasticJointLaw::plastic_laws() {
 }
 
 const ElasticPlasticLaw* PlasticJointLaw::law(Dof dof) const {
-    const auto& law = laws_[index(dof)];
-    return law ? &*law : nullptr;
+    return plastic(index(dof)) ? &*laws_[index(dof)] : nullptr;
 }
 
 PerDof<double> PlasticJointLaw::continuous(const PerDof<double>& measured) const {
@@ -82,7 +81,7 @@ void PlasticJointLaw::track(const PerDof<double>& measured, const PerDof<double>
 void PlasticJointLaw::start(const PerDof<double>& measured) {
     track(measured, measured);
     for (std::size_t i = 0; i < kDofCount; ++i) {
-        if (laws_[i]) laws_[i]->start(measured[i]);
+        if (plastic(i)) laws_[i]->start(measured[i]);
     }
 }
 
@@ -167,16 +166,16 @@ void PlasticJointLaw::summarise() {
 
 double PlasticJointLaw::dissipated() const {
     double sum = 0.0;
-    for (const auto& law : laws_) {
-        if (law) sum += law->dissipated();
+    for (std::size_t i = 0; i < kDofCount; ++i) {
+        if (plastic(i)) sum += laws_[i]->dissipated();
     }
     return sum;
 }
 
 double PlasticJointLaw::dissipated_by_corrections() const {
     double sum = 0.0;
-    for (const auto& law : laws_) {
-        if (law) sum += law->dissipated_by_corrections();
+    for (std::size_t i = 0; i < kDofCount; ++i) {
+        if (plastic(i)) sum += laws_[i]->dissipated_by_corrections();
     }
     return sum;
 }
@@ -192,7 +191,7 @@ double PlasticJointLaw::utilisation() const {
     }
     double u = 0.0;
     for (std::size_t i = 0; i < kDofCount; ++i) {
-        if (!laws_[i]) continue;
+        if (!plastic(i)) continue;
         const DofLaw& law = laws_[i]->law();
         const double load = last_loads_[i];
         u = std::max(u, std::abs(load) / (load >= 0.0 ? law.capacity_positive : law.capacity_negative));
@@ -204,7 +203,7 @@ double PlasticJointLaw::elastic_energy(const PerDof<double>& measured) const {
     const PerDof<double> positions = continuous(measured);
     double sum = 0.0;
     for (std::size_t i = 0; i < kDofCount; ++i) {
-        if (laws_[i]) sum += laws_[i]->elastic_energy(positions[i]);
+        if (plastic(i)) sum += laws_[i]->elastic_energy(positions[i]);
     }
     return sum;
 }
