@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <string>
 
 #include "plascap/input_error.hpp"
@@ -26,7 +27,7 @@ void validate_dof_law(const DofLaw& law, const char* where) {
 
 ElasticPlasticLaw::ElasticPlasticLaw(const DofLaw& law, bool two_sided_bounds)
     : law_(law), regime_(law.stiffness ? Regime::ElasticPlastic : Regime::RigidPlastic),
-      two_sided_bounds_(two_sided_bounds) {}
+      two_sided_bounds_(two_sided_bounds), books_(std::make_unique<Books>()) {}
 
 void ElasticPlasticLaw::start(double position) {
     plastic_offset_ = position;
@@ -36,8 +37,8 @@ void ElasticPlasticLaw::start(double position) {
 RowCommand ElasticPlasticLaw::plan(double position, double dt, double effective_mass, std::optional<double> joint_bound) {
     planned_position_ = position;
     planned_stopping_stiffness_ = effective_mass / (dt * dt);
-    omega_dt_ = spring_omega_dt(law_.stiffness, effective_mass, dt);
-    regime_ = regime_for(law_.stiffness.has_value(), omega_dt_);  // eq. 3.2
+    planned_ = true;
+    regime_ = regime_for(law_.stiffness.has_value(), spring_omega_dt(law_.stiffness, effective_mass, dt));  // eq. 3.2
     if (regime_ != Regime::ElasticPlastic) {
         // Paper §2: target velocity 0, force bounded by the capacity; plus the correction.
         RowCommand hold;
@@ -62,6 +63,7 @@ RowCommand ElasticPlasticLaw::plan(double position, double dt, double effective_
 }
 
 void ElasticPlasticLaw::settle(double position, double applied_force, double corrected_motion) {
+    moved_ = false;
     if (regime_ == Regime::ElasticPlastic) {
         if (!coupled_) settle_elastic_plastic(position);
     } else {
@@ -82,18 +84,26 @@ void ElasticPlasticLaw::settle_rigid_plastic(double position, double applied_for
                                 : 0.0;  // m·|Δx|/dt² over the bound
     const bool flowed = flow_.flowed(share, stopping);
     if (!flow_.at_bound()) {
-        pending_motion_ = pending_work_ = pending_correction_work_ = 0.0;  // the solver's motion: the hold takes it back
+        if (pending_) clear_pending();  // the solver's motion: the hold takes it back
         return;
     }
-    pending_motion_ += motion;
-    pending_work_ += -applied_force * motion * work_factor_;
-    pending_correction_work_ += -applied_force * corrected_motion * work_factor_;
+    Books& books = *books_;
+    books.pending_motion += motion;
+    books.pending_work += -applied_force * motion * books.work_factor;
+    books.pending_correction_work += -applied_force * corrected_motion * books.work_factor;
+    pending_ = true;
     if (!flowed) return;
-    plastic_offset_ += pending_motion_;
-    accumulated_ += std::abs(pending_motion_);
-    dissipated_ += pending_work_;
-    dissipated_by_corrections_ += pending_correction_work_;
-    pending_motion_ = pending_work_ = pending_correction_work_ = 0.0;
+    plastic_offset_ += books.pending_motion;
+    books.accumulated += std::abs(books.pending_motion);
+    books.dissipated += books.pending_work;
+    books.dissipated_by_corrections += books.pending_correction_work;
+    moved_ = true;
+    clear_pending();
+}
+
+void ElasticPlasticLaw::clear_pending() {
+    books_->pending_motion = books_->pending_work = books_->pending_correction_work = 0.0;
+    pending_ = false;
 }
 
 void ElasticPlasticLaw::settle_elastic_plastic(double position) {
@@ -109,16 +119,26 @@ void ElasticPlasticLaw::settle_elastic_plastic(double position) {
         moved_to = position + law_.capacity_negative / k;
         capacity = law_.capacity_negative;
     }
+    if (moved_to == plastic_offset_) return;  // inside the capacities: nothing to book
     const double step = std::abs(moved_to - plastic_offset_);
-    accumulated_ += step;
-    dissipated_ += capacity * step * work_factor_;  // the force stays on the capacity while x_p moves
+    books_->accumulated += step;
+    books_->dissipated += capacity * step * books_->work_factor;  // the force stays on the capacity while x_p moves
     plastic_offset_ = moved_to;
+    moved_ = true;
 }
 
 void ElasticPlasticLaw::flow(double step, double load) {
     plastic_offset_ += step;
-    accumulated_ += std::abs(step);
-    dissipated_ += load * step * work_factor_;  // the joint's resisting force −load does −(−load)·step of work on the flow
+    books_->accumulated += std::abs(step);
+    books_->dissipated += load * step * books_->work_factor;  // the joint's resisting force −load does −(−load)·step of work on the flow
+    moved_ = true;
+}
+
+double ElasticPlasticLaw::omega_dt() const {
+    if (!law_.stiffness || !planned_) return 0.0;
+    // √(k/m)·dt = √(k/(m/dt²)) (regime.hpp); spring_omega_dt's ∞ for a mass not > 0.
+    if (!(planned_stopping_stiffness_ > 0.0)) return INFINITY;
+    return std::sqrt(*law_.stiffness / planned_stopping_stiffness_);
 }
 
 double ElasticPlasticLaw::elastic_energy(double position) const {

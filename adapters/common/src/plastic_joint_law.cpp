@@ -154,13 +154,22 @@ bool PlasticJointLaw::settle(const PerDof<double>& measured, const PerDof<double
 }
 
 void PlasticJointLaw::summarise() {
-    summary_ = {};
+    bool moved = false;
+    summary_.at_capacity = summary_.near_capacity = false;
+    for (std::size_t i = 0; i < kDofCount; ++i) {
+        if (!plastic(i)) continue;
+        const ElasticPlasticLaw& law = *laws_[i];
+        moved = moved || law.moved();
+        summary_.at_capacity = summary_.at_capacity || law.at_capacity();
+        summary_.near_capacity = summary_.near_capacity || law.near_capacity();
+    }
+    // The totals change only when a plastic offset moved: only then are the laws' books read (a
+    // step that reads them all waits on memory for them, issue 16).
+    if (!moved) return;
+    summary_.plastic_displacement = summary_.plastic_rotation = 0.0;
     for (Dof dof : kAllDofs) {
         if (!plastic(index(dof))) continue;
-        const auto& law = laws_[index(dof)];
-        (is_rotation(dof) ? summary_.plastic_rotation : summary_.plastic_displacement) += law->accumulated_plastic();
-        summary_.at_capacity = summary_.at_capacity || law->at_capacity();
-        summary_.near_capacity = summary_.near_capacity || law->near_capacity();
+        (is_rotation(dof) ? summary_.plastic_rotation : summary_.plastic_displacement) += laws_[index(dof)]->accumulated_plastic();
     }
 }
 

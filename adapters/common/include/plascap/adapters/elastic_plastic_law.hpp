@@ -11,6 +11,7 @@
 // ODE's usual factor kHoldCorrection). The work the dof absorbs in plastic flow is the dissipated
 // energy.
 #include <cmath>
+#include <memory>
 #include <optional>
 
 #include "plascap/adapters/flow_criterion.hpp"
@@ -38,6 +39,8 @@ public:
     // `two_sided_bounds`: the engine's Hold row carries both capacities (row_capabilities.hpp), so a
     // load reversal meets the capacity of its own side from its first step.
     explicit ElasticPlasticLaw(const DofLaw& law, bool two_sided_bounds = false);
+    ElasticPlasticLaw(ElasticPlasticLaw&&) noexcept = default;
+    ElasticPlasticLaw& operator=(ElasticPlasticLaw&&) noexcept = default;
 
     // When the joint takes hold: the dof's position then is its unloaded, unyielded state.
     void start(double position);
@@ -61,19 +64,22 @@ public:
 
     // The work the row does per unit of the dof's motion, per unit of its force, for the next
     // settle() or flow(): 1 but for Euler-angle rotation rows (plastic_joint_law.cpp).
-    void set_work_factor(double factor) { work_factor_ = factor; }
+    void set_work_factor(double factor) { books_->work_factor = factor; }
     // The plastic offset moves by `step` under `load` (the section load, −force on b): the
     // accumulated plastic motion grows by |step| and the dissipated energy by load·step.
     void flow(double step, double load);
 
     const DofLaw& law() const { return law_; }
     Regime regime() const { return regime_; }
-    double omega_dt() const { return omega_dt_; }
+    // ω·dt of the last plan (eq. 3.2); 0 without a stiffness or before the first plan.
+    double omega_dt() const;
     double plastic_offset() const { return plastic_offset_; }
-    double accumulated_plastic() const { return accumulated_; }  // Σ|Δx_p| [m | rad]
-    double dissipated() const { return dissipated_; }            // [J]
+    double accumulated_plastic() const { return books_->accumulated; }  // Σ|Δx_p| [m | rad]
+    double dissipated() const { return books_->dissipated; }            // [J]
     // The part of dissipated() booked on motion that position corrections made [J].
-    double dissipated_by_corrections() const { return dissipated_by_corrections_; }
+    double dissipated_by_corrections() const { return books_->dissipated_by_corrections; }
+    // The plastic offset moved in the last settle() or flow() (accumulated_plastic() grew).
+    bool moved() const { return moved_; }
     // A rigid-plastic row at its bound in the last step.
     bool at_capacity() const { return regime_ != Regime::ElasticPlastic && flow_.at_bound(); }
     // A rigid-plastic row carried at least half its bound in the last step.
@@ -91,28 +97,38 @@ private:
     }
     void settle_rigid_plastic(double position, double applied_force, double corrected_motion);
     void settle_elastic_plastic(double position);
+    void clear_pending();
 
-    // Members ordered so the small ones share one word: six of these are most of a joint's bytes,
-    // which a step of 10,000 joints waits on memory for (issue 16).
+    // What a step reads only when the dof flows or is at its bound: the books of plastic work and
+    // the flow not yet confirmed. Kept apart, so a step touches only the law's object itself (120 B,
+    // two cache lines in a joint's array): a step of 10,000 joints waits on memory for every byte
+    // it touches (issue 16, docs/adapters.md ODE "Cost").
+    struct Books {
+        double accumulated = 0.0;  // Σ|Δx_p|
+        double dissipated = 0.0;
+        double dissipated_by_corrections = 0.0;
+        // The motion and the row's work in the steps at its bound not yet confirmed as flow [m | rad, J].
+        double pending_motion = 0.0, pending_work = 0.0;
+        double pending_correction_work = 0.0;  // the part of pending_work on corrected motion [J]
+        double work_factor = 1.0;
+    };
+
+    // Members ordered so the small ones share one word.
     DofLaw law_;
     Regime regime_;
     bool two_sided_bounds_ = false;
     bool coupled_ = false;
-    double omega_dt_ = 0.0;
+    bool planned_ = false;
+    bool moved_ = false;     // the plastic offset moved in the last settle or flow
+    bool pending_ = false;   // the books hold flow not yet confirmed
     double planned_position_ = 0.0;  // the step as planned
     // m/dt², the force per unit of motion that stops the step's motion in one step [N/m | N·m/rad].
     double planned_stopping_stiffness_ = 0.0;
     double plastic_offset_ = 0.0;
-    double accumulated_ = 0.0;
-    double dissipated_ = 0.0;
     double last_force_ = 0.0;
     FlowCriterion flow_;  // rigid-plastic: is motion at the bound flow?
-    // The motion and the row's work in the steps at its bound not yet confirmed as flow [m | rad, J].
-    double pending_motion_ = 0.0, pending_work_ = 0.0;
-    double pending_correction_work_ = 0.0;  // the part of pending_work_ on corrected motion [J]
-    double dissipated_by_corrections_ = 0.0;
     double last_lower_ = 0.0, last_upper_ = 0.0;  // the Hold row's force range last planned
-    double work_factor_ = 1.0;
+    std::unique_ptr<Books> books_;
 };
 
 }  // namespace plascap

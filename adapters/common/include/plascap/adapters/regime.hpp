@@ -4,11 +4,12 @@
 // limit, √(k/m)·dt > 0.25, the spring is too stiff to sample: the dof falls back to rigid-plastic
 // (as the paper's "elastic-plastic constraint 2" does, Table 3.6).
 #include <cmath>
+#include <cstdint>
 #include <optional>
 
 namespace plascap {
 
-enum class Regime {
+enum class Regime : std::uint8_t {  // one byte: the law stores one per dof (issue 16)
     RigidPlastic,       // no stiffness given: rigid below capacity, flows at it
     ElasticPlastic,     // explicit spring capped at capacity; ω·dt ≤ kStiffSpringLimit
     StiffRigidPlastic,  // stiffness given but ω·dt > kStiffSpringLimit: treated as rigid-plastic
