@@ -69,7 +69,7 @@ void ElasticPlasticLaw::settle(double position, double applied_force, double cor
     } else {
         settle_rigid_plastic(position, applied_force, corrected_motion);
     }
-    last_force_ = applied_force;
+    last_force_sign_ = static_cast<std::int8_t>((applied_force > 0.0) - (applied_force < 0.0));
 }
 
 void ElasticPlasticLaw::settle_rigid_plastic(double position, double applied_force, double corrected_motion) {

@@ -4,6 +4,7 @@
 // translation of b's anchor along the axis [m], or rotation of b about it (right-hand rule) [rad].
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 
 namespace plascap {
@@ -34,7 +35,7 @@ const char* dof_name(Dof dof);
 Dof dof_from_name(const std::string& name, const std::string& where);
 
 // What a joint does in a dof. Only rigid and plastic dofs get constraint rows.
-enum class DofMode {
+enum class DofMode : std::uint8_t {  // one byte: each joint law keeps six (issue 16)
     Free,     // no row: the dof moves without resistance
     Rigid,    // a locked row: no motion, unlimited force
     Plastic,  // a force-limited row driven by the dof's ElasticPlasticLaw

@@ -11,6 +11,7 @@
 // ODE's usual factor kHoldCorrection). The work the dof absorbs in plastic flow is the dissipated
 // energy.
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <optional>
 
@@ -91,8 +92,8 @@ private:
     // A row's bound is symmetric, so take the capacity on the side the dof was last loaded; before
     // any load, the smaller one.
     double hold_bound() const {
-        if (last_force_ < 0.0) return law_.capacity_positive;
-        if (last_force_ > 0.0) return law_.capacity_negative;
+        if (last_force_sign_ < 0) return law_.capacity_positive;
+        if (last_force_sign_ > 0) return law_.capacity_negative;
         return law_.capacity_positive < law_.capacity_negative ? law_.capacity_positive : law_.capacity_negative;
     }
     void settle_rigid_plastic(double position, double applied_force, double corrected_motion);
@@ -100,9 +101,9 @@ private:
     void clear_pending();
 
     // What a step reads only when the dof flows or is at its bound: the books of plastic work and
-    // the flow not yet confirmed. Kept apart, so a step touches only the law's object itself (120 B,
-    // two cache lines in a joint's array): a step of 10,000 joints waits on memory for every byte
-    // it touches (issue 16, docs/adapters.md ODE "Cost").
+    // the flow not yet confirmed. Kept apart, so a step touches only the law's object itself (112 B
+    // where it was 184): a step of 10,000 joints waits on memory for every byte it touches (issue
+    // 16, docs/adapters.md ODE "Cost").
     struct Books {
         double accumulated = 0.0;  // Σ|Δx_p|
         double dissipated = 0.0;
@@ -121,11 +122,11 @@ private:
     bool planned_ = false;
     bool moved_ = false;     // the plastic offset moved in the last settle or flow
     bool pending_ = false;   // the books hold flow not yet confirmed
+    std::int8_t last_force_sign_ = 0;  // of the force the row applied in the last step: −1, 0 or 1
     double planned_position_ = 0.0;  // the step as planned
     // m/dt², the force per unit of motion that stops the step's motion in one step [N/m | N·m/rad].
     double planned_stopping_stiffness_ = 0.0;
     double plastic_offset_ = 0.0;
-    double last_force_ = 0.0;
     FlowCriterion flow_;  // rigid-plastic: is motion at the bound flow?
     double last_lower_ = 0.0, last_upper_ = 0.0;  // the Hold row's force range last planned
     std::unique_ptr<Books> books_;
