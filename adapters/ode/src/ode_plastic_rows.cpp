@@ -33,10 +33,10 @@ void OdePlasticRows::set_geometry(const JointFrameState& state) {
 void OdePlasticRows::count_rows() {
     count_ = 0;
     all_unbounded_ = true;
-    for (const std::optional<OdeRowTarget>& t : targets_) {
-        if (!t) continue;
+    for (std::size_t i = 0; i < kDofCount; ++i) {
+        if (!has_row(i)) continue;
         ++count_;
-        all_unbounded_ = all_unbounded_ && t->lower == -dInfinity && t->upper == dInfinity;
+        all_unbounded_ = all_unbounded_ && targets_[i].lower == -dInfinity && targets_[i].upper == dInfinity;
     }
 }
 
@@ -59,7 +59,7 @@ void OdePlasticRows::getInfo2(dReal, dReal, int rowskip, dReal* J1, dReal* J2, i
     load_next_joint();
     int r = 0;
     for (std::size_t i = 0; i < targets_.size(); ++i) {
-        if (!targets_[i]) continue;
+        if (!has_row(i)) continue;
         dReal* on_b = J1 + r * rowskip;
         dReal* on_a = J2 ? J2 + r * rowskip : nullptr;  // ODE zeroed both
         // +J on b, −J on a (plascap's Bullet constraint writes the same rows).
@@ -78,9 +78,9 @@ void OdePlasticRows::getInfo2(dReal, dReal, int rowskip, dReal* J1, dReal* J2, i
             store(on_b + dDA_AX, gradient);
             if (on_a) store(on_a + dDA_AX, {-gradient[0], -gradient[1], -gradient[2]});
         }
-        pairRhsCfm[r * pairskip + kRhs] = targets_[i]->rate;
-        pairLoHi[r * pairskip + kLo] = targets_[i]->lower;
-        pairLoHi[r * pairskip + kHi] = targets_[i]->upper;
+        pairRhsCfm[r * pairskip + kRhs] = targets_[i].rate;
+        pairLoHi[r * pairskip + kLo] = targets_[i].lower;
+        pairLoHi[r * pairskip + kHi] = targets_[i].upper;
         ++r;
     }
 }
