@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "plascap/adapters/flow_criterion.hpp"
 #include "plascap/adapters/joint_frame.hpp"
@@ -205,6 +206,37 @@ TEST(ElasticPlasticLaw, StiffSpringsFallBackToRigidPlastic) {
     c = law.plan(0.0, 0.0002, 1.0);  // ω·dt = 0.2 ≤ 0.25: elastic-plastic
     EXPECT_EQ(law.regime(), Regime::ElasticPlastic);
     EXPECT_EQ(c.kind, RowCommand::Kind::Push);
+}
+
+// ω·dt = √(k/m)·dt (paper eq. 3.2), as the law reports it: derived from the m/dt² it keeps, so 0
+// before any plan, and infinite for a row of no effective mass (which holds rigid-plastic).
+TEST(ElasticPlasticLaw, ReportsOmegaDtOfTheLastPlan) {
+    ElasticPlasticLaw law(DofLaw{10.0, 10.0, 400.0});
+    law.start(0.0);
+    EXPECT_EQ(law.omega_dt(), 0.0);
+    law.plan(0.0, 0.01, 4.0);  // √(400/4)·0.01 = 0.1
+    EXPECT_NEAR(law.omega_dt(), 0.1, 1e-15);
+    EXPECT_EQ(law.regime(), Regime::ElasticPlastic);
+    law.plan(0.0, 0.01, 0.0);
+    EXPECT_EQ(law.omega_dt(), INFINITY);
+    EXPECT_EQ(law.regime(), Regime::StiffRigidPlastic);
+    ElasticPlasticLaw rigid(DofLaw{10.0, 10.0, std::nullopt});
+    rigid.start(0.0);
+    rigid.plan(0.0, 0.01, 4.0);
+    EXPECT_EQ(rigid.omega_dt(), 0.0);  // no spring
+}
+
+// A law moved into place (as a joint's laws are) keeps its books.
+TEST(ElasticPlasticLaw, AMovedLawKeepsItsBooks) {
+    ElasticPlasticLaw law(DofLaw{10.0, 20.0, 100.0});
+    law.start(0.0);
+    law.plan(0.0, 0.01, 1.0);
+    law.settle(0.3, 0.0);  // trial −30 passes −10: x_p moves to 0.3 − 10/100 = 0.2
+    ElasticPlasticLaw moved(std::move(law));
+    EXPECT_NEAR(moved.plastic_offset(), 0.2, 1e-15);
+    EXPECT_NEAR(moved.accumulated_plastic(), 0.2, 1e-15);
+    EXPECT_NEAR(moved.dissipated(), 10.0 * 0.2, 1e-14);  // capacity × plastic motion
+    EXPECT_TRUE(moved.moved());
 }
 
 // The joint breaks when Σ|Δx_p| over the translations passes its limit, and stays broken.
