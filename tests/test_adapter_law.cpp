@@ -239,6 +239,23 @@ TEST(ElasticPlasticLaw, AMovedLawKeepsItsBooks) {
     EXPECT_TRUE(moved.moved());
 }
 
+// A copy of a law is a law of its own: stepping it leaves the original's books as they were.
+TEST(ElasticPlasticLaw, ACopyKeepsBooksOfItsOwn) {
+    ElasticPlasticLaw law(DofLaw{10.0, 20.0, 100.0});
+    law.start(0.0);
+    law.plan(0.0, 0.01, 1.0);
+    law.settle(0.3, 0.0);  // x_p → 0.2, dissipated 10 · 0.2
+    ElasticPlasticLaw copy = law;
+    copy.plan(0.3, 0.01, 1.0);
+    copy.settle(0.5, 0.0);  // trial −100·(0.5 − 0.2) = −30 passes −10: x_p → 0.4, another 10 · 0.2
+    EXPECT_NEAR(copy.accumulated_plastic(), 0.4, 1e-15);
+    EXPECT_NEAR(copy.dissipated(), 4.0, 1e-14);
+    EXPECT_NEAR(law.accumulated_plastic(), 0.2, 1e-15);
+    EXPECT_NEAR(law.dissipated(), 2.0, 1e-14);
+    law = copy;  // and assigned, it takes the copy's books
+    EXPECT_NEAR(law.dissipated(), 4.0, 1e-14);
+}
+
 // The joint breaks when Σ|Δx_p| over the translations passes its limit, and stays broken.
 TEST(PlasticJointLaw, BreaksAtTheSummedPlasticDisplacementAndStaysBroken) {
     PlasticJointSettings s;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <memory>
 #include <string>
 
 #include "plascap/input_error.hpp"
@@ -27,7 +26,7 @@ void validate_dof_law(const DofLaw& law, const char* where) {
 
 ElasticPlasticLaw::ElasticPlasticLaw(const DofLaw& law, bool two_sided_bounds)
     : law_(law), regime_(law.stiffness ? Regime::ElasticPlastic : Regime::RigidPlastic),
-      two_sided_bounds_(two_sided_bounds), books_(std::make_unique<Books>()) {}
+      two_sided_bounds_(two_sided_bounds) {}
 
 void ElasticPlasticLaw::start(double position) {
     plastic_offset_ = position;

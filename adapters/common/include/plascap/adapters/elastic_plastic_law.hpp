@@ -40,8 +40,6 @@ public:
     // `two_sided_bounds`: the engine's Hold row carries both capacities (row_capabilities.hpp), so a
     // load reversal meets the capacity of its own side from its first step.
     explicit ElasticPlasticLaw(const DofLaw& law, bool two_sided_bounds = false);
-    ElasticPlasticLaw(ElasticPlasticLaw&&) noexcept = default;
-    ElasticPlasticLaw& operator=(ElasticPlasticLaw&&) noexcept = default;
 
     // When the joint takes hold: the dof's position then is its unloaded, unyielded state.
     void start(double position);
@@ -113,6 +111,26 @@ private:
         double pending_correction_work = 0.0;  // the part of pending_work on corrected motion [J]
         double work_factor = 1.0;
     };
+    // The books in their own allocation, copied with the law (a law stays a value).
+    class BooksApart {
+    public:
+        BooksApart() : books_(std::make_unique<Books>()) {}
+        BooksApart(const BooksApart& other) : books_(copy(other)) {}
+        BooksApart& operator=(const BooksApart& other) {
+            books_ = copy(other);
+            return *this;
+        }
+        BooksApart(BooksApart&&) noexcept = default;
+        BooksApart& operator=(BooksApart&&) noexcept = default;
+        Books& operator*() const { return *books_; }
+        Books* operator->() const { return books_.get(); }
+
+    private:
+        static std::unique_ptr<Books> copy(const BooksApart& other) {
+            return other.books_ ? std::make_unique<Books>(*other.books_) : nullptr;  // none: moved from
+        }
+        std::unique_ptr<Books> books_;
+    };
 
     // Members ordered so the small ones share one word.
     DofLaw law_;
@@ -129,7 +147,7 @@ private:
     double plastic_offset_ = 0.0;
     FlowCriterion flow_;  // rigid-plastic: is motion at the bound flow?
     double last_lower_ = 0.0, last_upper_ = 0.0;  // the Hold row's force range last planned
-    std::unique_ptr<Books> books_;
+    BooksApart books_;
 };
 
 }  // namespace plascap
