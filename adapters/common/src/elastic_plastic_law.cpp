@@ -43,12 +43,9 @@ RowCommand ElasticPlasticLaw::plan(double position, double dt, double effective_
         RowCommand hold;
         hold.kind = RowCommand::Kind::Hold;
         hold.bound = joint_bound ? *joint_bound : hold_bound();
-        if (two_sided_bounds_ && !joint_bound) {
-            hold.lower = -law_.capacity_positive, hold.upper = law_.capacity_negative;  // f on b, both sides
-        } else {
-            hold.lower = -hold.bound, hold.upper = hold.bound;
-        }
-        last_lower_ = hold.lower, last_upper_ = hold.upper;
+        held_on_both_capacities_ = two_sided_bounds_ && !joint_bound;
+        last_bound_ = hold.bound;
+        hold.lower = -side_bound(-1.0), hold.upper = side_bound(1.0);  // f on b
         hold.velocity = -kHoldCorrection * (position - plastic_offset_) / dt;
         return hold;
     }
@@ -75,7 +72,7 @@ void ElasticPlasticLaw::settle_rigid_plastic(double position, double applied_for
     // Motion at capacity is plastic flow (flow_criterion.hpp) and the row's work on it, −f·Δx, is
     // absorbed. A flow confirmed late takes up the motion of the steps at the bound before it, and
     // the row's work on that motion.
-    const double side_bound = applied_force >= 0.0 ? last_upper_ : -last_lower_;
+    const double side_bound = this->side_bound(applied_force);
     const double share = side_bound > 0.0 ? applied_force / side_bound : 0.0;
     const double motion = position - planned_position_;
     const double stopping = std::isfinite(planned_stopping_stiffness_) && side_bound > 0.0

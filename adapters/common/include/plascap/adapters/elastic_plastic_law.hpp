@@ -94,12 +94,18 @@ private:
         if (last_force_sign_ > 0) return law_.capacity_negative;
         return law_.capacity_positive < law_.capacity_negative ? law_.capacity_positive : law_.capacity_negative;
     }
+    // The bound the last planned Hold row put on a force of this sign on b: both capacities, each on
+    // its side, or one bound for both sides.
+    double side_bound(double force) const {
+        if (!held_on_both_capacities_) return last_bound_;
+        return force >= 0.0 ? law_.capacity_negative : law_.capacity_positive;
+    }
     void settle_rigid_plastic(double position, double applied_force, double corrected_motion);
     void settle_elastic_plastic(double position);
     void clear_pending();
 
     // What a step reads only when the dof flows or is at its bound: the books of plastic work and
-    // the flow not yet confirmed. Kept apart, so a step touches only the law's object itself (112 B
+    // the flow not yet confirmed. Kept apart, so a step touches only the law's object itself (104 B
     // where it was 184): a step of 10,000 joints waits on memory for every byte it touches (issue
     // 16, docs/adapters.md ODE "Cost").
     struct Books {
@@ -141,12 +147,13 @@ private:
     bool moved_ = false;     // the plastic offset moved in the last settle or flow
     bool pending_ = false;   // the books hold flow not yet confirmed
     std::int8_t last_force_sign_ = 0;  // of the force the row applied in the last step: −1, 0 or 1
+    bool held_on_both_capacities_ = false;  // the last Hold row's range was [−capacity_positive, capacity_negative]
     double planned_position_ = 0.0;  // the step as planned
     // m/dt², the force per unit of motion that stops the step's motion in one step [N/m | N·m/rad].
     double planned_stopping_stiffness_ = 0.0;
     double plastic_offset_ = 0.0;
     FlowCriterion flow_;  // rigid-plastic: is motion at the bound flow?
-    double last_lower_ = 0.0, last_upper_ = 0.0;  // the Hold row's force range last planned
+    double last_bound_ = 0.0;  // the last Hold row's bound on both sides, unless held on both capacities
     BooksApart books_;
 };
 

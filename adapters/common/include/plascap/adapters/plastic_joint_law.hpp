@@ -85,7 +85,7 @@ private:
     bool euler_rows() const { return rows_.rotations == RotationMeasure::EulerXYZ; }
     // Whether dof i has a law (the constructor makes one for each plastic dof, none for the others).
     // Read from the modes, not from laws_[i]'s own flag: a step then never touches the slot of a
-    // rigid or free dof (120 B each; docs/adapters.md, ODE "Cost").
+    // rigid or free dof (112 B each; docs/adapters.md, ODE "Cost").
     bool plastic(std::size_t i) const { return modes_[i] == DofMode::Plastic; }
 
     // What a coupled yield condition needs beside the dof laws (plastic_joint_law.cpp). Only a joint
