@@ -173,20 +173,21 @@ void PlasticJointLaw::summarise() {
     }
 }
 
-double PlasticJointLaw::dissipated() const {
+template <class OfLaw>
+double PlasticJointLaw::sum_over_plastic(OfLaw of_law) const {
     double sum = 0.0;
     for (std::size_t i = 0; i < kDofCount; ++i) {
-        if (plastic(i)) sum += laws_[i]->dissipated();
+        if (plastic(i)) sum += of_law(*laws_[i], i);
     }
     return sum;
 }
 
+double PlasticJointLaw::dissipated() const {
+    return sum_over_plastic([](const ElasticPlasticLaw& law, std::size_t) { return law.dissipated(); });
+}
+
 double PlasticJointLaw::dissipated_by_corrections() const {
-    double sum = 0.0;
-    for (std::size_t i = 0; i < kDofCount; ++i) {
-        if (plastic(i)) sum += laws_[i]->dissipated_by_corrections();
-    }
-    return sum;
+    return sum_over_plastic([](const ElasticPlasticLaw& law, std::size_t) { return law.dissipated_by_corrections(); });
 }
 
 double PlasticJointLaw::utilisation() const {
@@ -210,11 +211,7 @@ double PlasticJointLaw::utilisation() const {
 
 double PlasticJointLaw::elastic_energy(const PerDof<double>& measured) const {
     const PerDof<double> positions = continuous(measured);
-    double sum = 0.0;
-    for (std::size_t i = 0; i < kDofCount; ++i) {
-        if (plastic(i)) sum += laws_[i]->elastic_energy(positions[i]);
-    }
-    return sum;
+    return sum_over_plastic([&](const ElasticPlasticLaw& law, std::size_t i) { return law.elastic_energy(positions[i]); });
 }
 
 }  // namespace plascap

@@ -87,6 +87,9 @@ private:
     // Read from the modes, not from laws_[i]'s own flag: a step then never touches the slot of a
     // rigid or free dof (112 B each; docs/adapters.md, ODE "Cost").
     bool plastic(std::size_t i) const { return modes_[i] == DofMode::Plastic; }
+    // Σ over the plastic dofs of of_law(law, i): the joint's dissipated and elastic energies.
+    template <class OfLaw>
+    double sum_over_plastic(OfLaw of_law) const;
 
     // What a coupled yield condition needs beside the dof laws (plastic_joint_law.cpp). Only a joint
     // with one carries it, and the settings stay out of the joint's own bytes but for what each
