@@ -9,6 +9,7 @@
 // of h (semi-implicit Euler, as both engines integrate) it has dropped a·h²·n(n+1)/2.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -284,6 +285,102 @@ TEST(OdeLifecycle, AGroupThatLoadsItsJointsAheadFlowsAsTheOscillatorSays) {
     for (int i = 0; i < steps; ++i) joints.step(kDt, OdePlasticJoints::Stepper::Exact);
     for (std::size_t i = 0; i < count; ++i)
         ASSERT_NEAR(dBodyGetPosition(blocks[i])[1], -0.5 - drop_after(steps, 18.0), 1e-9) << "block " << i;
+}
+
+// The axial dof an elastic spring k with capacities far above the load, every other dof rigid.
+PlasticJointSettings axial_spring(double k) {
+    PlasticJointSettings s = axial(1e6);
+    s.laws[index(Dof::N)].stiffness = k;
+    return s;
+}
+
+// The block's drop u after each step under its weight suddenly applied, on an explicit spring
+// (force k·u from the step's start) and semi-implicit Euler, as ODE integrates: w ← w + h·(g − k·u/m),
+// u ← u + h·w (the elastic–perfectly-plastic oscillator of docs/references.md, W ≤ F/2, peak 2W/k).
+std::vector<double> spring_drops(double k, const std::vector<double>& steps) {
+    std::vector<double> drops;
+    double u = 0.0, w = 0.0;
+    for (double h : steps) {
+        w += h * (kG - k * u / kMass);
+        u += h * w;
+        drops.push_back(u);
+    }
+    return drops;
+}
+
+// ODE's rows carry what must be solved; a spring's force is known before the step, so ODE's joint
+// puts it on the bodies (their force accumulators) instead of giving ODE a row to iterate (issue 16).
+// Applied once a step — also when a change of dt makes the group plan again what it planned as it
+// settled — the block moves as the oscillator's recurrence says, and the joint reports the spring's
+// force as what it applied.
+TEST(OdeLifecycle, ASpringPushesTheBodiesOnceAStepAsTheOscillatorSays) {
+    const double k = 1200.0;  // ω·dt = √(k/m)·dt = 0.2 ≤ 0.25: an elastic row (eq. 3.2)
+    OdeWorld ode;
+    const dBodyID block = ode.box(-0.5);
+    OdePlasticJoints joints(ode.world);
+    joints.add(nullptr, block, Pose{}, axial_spring(k));
+    std::vector<double> steps;
+    for (int i = 0; i < 60; ++i) steps.push_back(i >= 20 && i < 30 ? 0.5 * kDt : kDt);
+    const std::vector<double> drops = spring_drops(k, steps);
+    double peak = 0.0;
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+        const double before = -0.5 - dBodyGetPosition(block)[1];
+        joints.step(steps[i], OdePlasticJoints::Stepper::Exact);
+        ASSERT_NEAR(-0.5 - dBodyGetPosition(block)[1], drops[i], 1e-9) << "step " << i;
+        // The law's force on b along N: tension, the spring's k·u of the step's start.
+        ASSERT_NEAR(joints[0].forces()[index(Dof::N)], k * before, 1e-9) << "step " << i;
+        peak = std::max(peak, drops[i]);
+    }
+    EXPECT_NEAR(peak, 2.0 * kMass * kG / k, 0.1 * 2.0 * kMass * kG / k);  // 2W/k = 0.05 m, to O(ω·dt)
+}
+
+// A joint whose one held dof is a spring keeps that spring as a row (an unreachable rate bounded by
+// its force): ODE writes a joint's feedback, by which the joint tells that a step solved it, only
+// for a joint with rows. Every other dof free, the block still drops as the oscillator says.
+TEST(OdeLifecycle, AJointOfOneSpringKeepsItAsARow) {
+    const double k = 1200.0;
+    PlasticJointSettings spring_only = axial_spring(k);
+    for (Dof dof : kAllDofs)
+        if (dof != Dof::N) spring_only.modes[index(dof)] = DofMode::Free;
+    OdeWorld ode;
+    const dBodyID block = ode.box(-0.5);
+    OdePlasticJoints joints(ode.world);
+    joints.add(nullptr, block, Pose{}, spring_only);
+    const std::vector<double> drops = spring_drops(k, std::vector<double>(30, kDt));
+    for (std::size_t i = 0; i < drops.size(); ++i) {
+        joints.step(kDt, OdePlasticJoints::Stepper::Exact);
+        ASSERT_TRUE(joints[0].solved()) << "step " << i;
+        ASSERT_NEAR(-0.5 - dBodyGetPosition(block)[1], drops[i], 1e-9) << "step " << i;
+    }
+}
+
+// A push no step took is taken back: while the block sleeps (ODE keeps a disabled body's force
+// accumulator) the joint, planned again every step because it counts its rows' work, leaves one
+// push on the block, not one per step; when it is severed, asleep, it takes that push back, and the
+// block falls freely from rest.
+TEST(OdeLifecycle, ASleepingSpringLeavesOnePushAndItsBreakTakesItBack) {
+    const double k = 1200.0;
+    OdeWorld ode;
+    const dBodyID block = ode.box(-0.5);
+    OdePlasticJoints joints(ode.world);
+    joints.add(nullptr, block, Pose{}, axial_spring(k)).count_rows_work();
+    for (int i = 0; i < 7; ++i) joints.step(kDt, OdePlasticJoints::Stepper::Exact);
+    dBodyDisable(block);  // asleep, at rest, as ODE's auto-disable leaves a body
+    dBodySetLinearVel(block, 0, 0, 0);
+    const double u = -0.5 - dBodyGetPosition(block)[1];
+    ASSERT_GT(u, 0.01);
+    for (int i = 0; i < 20; ++i) {
+        joints.step(kDt, OdePlasticJoints::Stepper::Exact);
+        ASSERT_FALSE(joints[0].solved());
+        ASSERT_NEAR(dBodyGetForce(block)[1], k * u, 1e-9) << "asleep, step " << i;  // the spring holds b up
+    }
+    joints[0].sever();
+    joints.step(kDt, OdePlasticJoints::Stepper::Exact);  // breaks at the step's end, wakes the block
+    ASSERT_TRUE(dBodyIsEnabled(block));
+    EXPECT_EQ(dBodyGetForce(block)[1], 0.0);
+    const double y = dBodyGetPosition(block)[1];
+    for (int i = 0; i < 10; ++i) joints.step(kDt, OdePlasticJoints::Stepper::Exact);
+    EXPECT_NEAR(y - dBodyGetPosition(block)[1], 0.5 * kG * kDt * kDt * 10 * 11, 1e-9);  // free fall from rest
 }
 
 // Two free bodies (no gravity) pulled apart by their speeds, joined on a joint that breaks after

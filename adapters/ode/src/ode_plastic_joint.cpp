@@ -18,10 +18,6 @@ namespace {
 // capacities of a Hold row as its two bounds, as plascap's Bullet constraint.
 constexpr RowCapabilities kOdeRows{RotationMeasure::SwingTwist, true};
 
-// As in the Bullet adapter: a Push row asks for an unreachable speed and so ends on its bound. Its
-// force range stays [−|F|, |F|]: ODE's dWorldStep (Dantzig) needs lower ≤ 0 ≤ upper.
-constexpr double kPushSpeed = 1e4;
-
 Pose pose_of(dBodyID body) {
     Pose p;
     const dReal* x = dBodyGetPosition(body);
@@ -67,8 +63,7 @@ std::optional<OdeRowTarget> row_target(DofMode mode, const std::optional<RowComm
     if (mode == DofMode::Free) return std::nullopt;
     if (mode == DofMode::Rigid) return OdeRowTarget{-kHoldCorrection * (position - reference) / dt, -dInfinity, dInfinity};
     if (command->kind == RowCommand::Kind::Hold) return OdeRowTarget{command->velocity, command->lower, command->upper};
-    const double f = std::abs(command->force);
-    return OdeRowTarget{command->force > 0.0 ? kPushSpeed : -kPushSpeed, -f, f};
+    return OdeRowTarget{0.0, command->force, command->force};  // pinned: the spring's force, pushed (set_rows)
 }
 
 }  // namespace
@@ -82,7 +77,10 @@ OdePlasticJoint::OdePlasticJoint(dWorldID world, dBodyID a, dBodyID b, const Pos
     dJointSetFeedback(rows_, &feedback_);
 }
 
-OdePlasticJoint::~OdePlasticJoint() { dJointDestroy(rows_); }
+OdePlasticJoint::~OdePlasticJoint() {
+    rows_->withdraw_pushes();  // a push no step took would act on the bodies without the joint
+    dJointDestroy(rows_);
+}
 
 void OdePlasticJoint::engage(double now) {
     driver_.engage(measure().positions, now);
@@ -111,7 +109,10 @@ JointEvent OdePlasticJoint::idle(double dt) { return act_on(driver_.idle(dt)); }
 
 JointEvent OdePlasticJoint::act_on(JointEvent event) {
     if (event != JointEvent::None) wake();
-    if (event == JointEvent::Broke) dJointDisable(rows_);  // broken stays broken
+    if (event == JointEvent::Broke) {
+        rows_->withdraw_pushes();  // broken while asleep: its last push must not act when they wake
+        dJointDisable(rows_);      // broken stays broken
+    }
     return event;
 }
 
@@ -159,8 +160,10 @@ JointEvent OdePlasticJoint::after_step(double dt) {
 
 JointEvent OdePlasticJoint::settle(const JointFrameState& state, double dt) {
     // Bodies are attached as (b, a): ODE's f1, t1 act on b, and f2, t2 on a.
-    const WorldLoad on_b{{feedback_.f1[0], feedback_.f1[1], feedback_.f1[2]}, {feedback_.t1[0], feedback_.t1[1], feedback_.t1[2]}};
-    const WorldLoad on_a{{feedback_.f2[0], feedback_.f2[1], feedback_.f2[2]}, {feedback_.t2[0], feedback_.t2[1], feedback_.t2[2]}};
+    WorldLoad on_b{{feedback_.f1[0], feedback_.f1[1], feedback_.f1[2]}, {feedback_.t1[0], feedback_.t1[1], feedback_.t1[2]}};
+    WorldLoad on_a{{feedback_.f2[0], feedback_.f2[1], feedback_.f2[2]}, {feedback_.t2[0], feedback_.t2[1], feedback_.t2[2]}};
+    rows_->pushes_taken();  // the step that solved the joint applied them
+    rows_->add_pushes(on_b, on_a);
     if (rows_work_.counting()) rows_work_.step_ends(on_b, on_a, body_velocity(b_), a_body_velocity(), dt);
     const JointEvent event = driver_.settle(rows_->forces_on_b(on_b), state.positions, dt);
     mark_feedback_unwritten();  // read: a step that leaves it so did not solve the joint

@@ -1,5 +1,7 @@
 #include "ode_plastic_rows.hpp"
 
+#include <cmath>
+
 #include "plascap/adapters/prefetch.hpp"
 
 namespace plascap {
@@ -14,7 +16,23 @@ void store(dReal* at, const Vec3& v) {
     at[0] = v[0], at[1] = v[1], at[2] = v[2];
 }
 
+// A Push row asks for an unreachable rate and so ends on its bound, as in the Bullet adapter. Its
+// force range stays [−|F|, |F|]: ODE's dWorldStep (Dantzig) needs lower ≤ 0 ≤ upper.
+constexpr double kPushSpeed = 1e4;
+
 }  // namespace
+
+OdePlasticRows::RowJacobian OdePlasticRows::jacobian(std::size_t i) const {
+    // +J on b, −J on a (plascap's Bullet constraint writes the same rows). A translation row acts at
+    // the anchor: J·v = axis·(v_b + ω_b × r_b − v_a − ω_a × r_a); a rotation row along the angle's
+    // gradient: J·v = g·(ω_b − ω_a).
+    if (i < 3) {
+        const Vec3& axis = axes_.translation[i];
+        return {axis, cross(lever_b_, axis), scaled(axis, -1.0), scaled(cross(lever_a_, axis), -1.0)};
+    }
+    const Vec3& gradient = axes_.rotation[i - 3];
+    return {Vec3{}, gradient, Vec3{}, scaled(gradient, -1.0)};
+}
 
 OdePlasticRows* OdePlasticRows::create(dWorldID world, dBodyID b, dBodyID a) {
     auto* joint = new OdePlasticRows(world);  // dBase's operator new: ODE's allocator, as dJointDestroy frees
@@ -62,27 +80,60 @@ void OdePlasticRows::getInfo2(dReal, dReal, int rowskip, dReal* J1, dReal* J2, i
         if (!has_row(i)) continue;
         dReal* on_b = J1 + r * rowskip;
         dReal* on_a = J2 ? J2 + r * rowskip : nullptr;  // ODE zeroed both
-        // +J on b, −J on a (plascap's Bullet constraint writes the same rows).
-        if (i < 3) {
-            const Vec3& axis = axes_.translation[i];
-            const Vec3 moment_b = cross(lever_b_, axis);
-            store(on_b + dDA_LX, axis);
-            store(on_b + dDA_AX, moment_b);
-            if (on_a) {
-                const Vec3 moment_a = cross(lever_a_, axis);
-                store(on_a + dDA_LX, {-axis[0], -axis[1], -axis[2]});
-                store(on_a + dDA_AX, {-moment_a[0], -moment_a[1], -moment_a[2]});
-            }
-        } else {
-            const Vec3& gradient = axes_.rotation[i - 3];
-            store(on_b + dDA_AX, gradient);
-            if (on_a) store(on_a + dDA_AX, {-gradient[0], -gradient[1], -gradient[2]});
+        const RowJacobian j = jacobian(i);
+        if (i < 3) store(on_b + dDA_LX, j.linear_b);  // a rotation row's linear parts are 0
+        store(on_b + dDA_AX, j.angular_b);
+        if (on_a) {
+            if (i < 3) store(on_a + dDA_LX, j.linear_a);
+            store(on_a + dDA_AX, j.angular_a);
         }
         pairRhsCfm[r * pairskip + kRhs] = targets_[i].rate;
         pairLoHi[r * pairskip + kLo] = targets_[i].lower;
         pairLoHi[r * pairskip + kHi] = targets_[i].upper;
         ++r;
     }
+}
+
+void OdePlasticRows::keep_one_push_as_row() {
+    for (std::size_t i = 0; i < kDofCount; ++i) {
+        if (!has_push(i)) continue;
+        const double f = targets_[i].upper;
+        targets_[i] = OdeRowTarget{f > 0.0 ? kPushSpeed : -kPushSpeed, -std::abs(f), std::abs(f)};
+        pushes_ &= static_cast<std::uint8_t>(~(1u << i));
+        rows_ |= static_cast<std::uint8_t>(1u << i);
+        return;
+    }
+}
+
+void OdePlasticRows::add_row_load(std::size_t i, double f, WorldLoad& on_b, WorldLoad& on_a) const {
+    // A row's force f on the bodies is Jᵀ·f: what ODE's feedback reports of a row at f.
+    const RowJacobian j = jacobian(i);
+    add_scaled(on_b.force, j.linear_b, f);
+    add_scaled(on_b.torque_about_com, j.angular_b, f);
+    add_scaled(on_a.force, j.linear_a, f);
+    add_scaled(on_a.torque_about_com, j.angular_a, f);
+}
+
+void OdePlasticRows::add_each_push(WorldLoad& on_b, WorldLoad& on_a) const {
+    for (std::size_t i = 0; i < kDofCount; ++i)
+        if (has_push(i)) add_row_load(i, targets_[i].upper, on_b, on_a);
+}
+
+void OdePlasticRows::apply_pushes(double sign) {
+    WorldLoad on_b, on_a;
+    add_each_push(on_b, on_a);
+    dxBody* b = node[0].body;
+    dxBody* a = node[1].body;
+    // A joint whose body has gone (dBodyDestroy detaches its joints) has nothing to push.
+    if (b) {
+        dBodyAddForce(b, sign * on_b.force[0], sign * on_b.force[1], sign * on_b.force[2]);
+        dBodyAddTorque(b, sign * on_b.torque_about_com[0], sign * on_b.torque_about_com[1], sign * on_b.torque_about_com[2]);
+    }
+    if (a) {
+        dBodyAddForce(a, sign * on_a.force[0], sign * on_a.force[1], sign * on_a.force[2]);
+        dBodyAddTorque(a, sign * on_a.torque_about_com[0], sign * on_a.torque_about_com[1], sign * on_a.torque_about_com[2]);
+    }
+    pushes_applied_ = sign > 0.0;
 }
 
 }  // namespace plascap

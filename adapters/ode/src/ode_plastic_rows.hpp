@@ -22,11 +22,14 @@
 
 namespace plascap {
 
-// One dof's row for the next step: J·v driven to `rate` with a force in [lower, upper] on b.
+// One dof's row for the next step: J·v driven to `rate` with a force in [lower, upper] on b. A
+// target whose range is one force (lower == upper: a spring's push) is that force, applied to the
+// bodies (OdePlasticRows::set_rows), not a row.
 struct OdeRowTarget {
     double rate = 0.0;    // [m/s | rad/s]
-    double lower = 0.0;   // [N | N·m], ≤ 0
-    double upper = 0.0;   // ≥ 0
+    double lower = 0.0;   // [N | N·m], ≤ 0 for a row
+    double upper = 0.0;   // ≥ 0 for a row
+    bool pinned() const { return lower == upper; }
 };
 
 class OdePlasticRows final : public dxJoint {
@@ -38,21 +41,45 @@ public:
     // The rows of the next step, for the joint as measured now (state's anchor is b's): dof i's is
     // target_of(i), a std::optional<OdeRowTarget>; no row for a dof without one. Written straight
     // into the joint: a step of 1,000 joints calls this 1,000 times (issue 16, docs/adapters.md "Cost").
+    //
+    // A pinned target (a spring's push: one force, not a range) is no row: its force goes on the
+    // bodies as the force and torque its row would apply at its bound (Jᵀ·f), added to their
+    // accumulators (dBodyAddForce, dBodyAddTorque), which ODE's next step applies and clears. ODE's
+    // iterations then carry the rows that need solving only: a row pinned at its bound costs them as
+    // much as any other (issue 16). One push stays a row where the joint would have no row, since
+    // ODE writes the feedback, and so tells a solved joint, only for a joint with rows.
+    // Forces applied for a step that did not take them (the joint planned again before a step, or
+    // asleep: ODE keeps a disabled body's accumulators) are taken back first.
     template <class TargetOf>
     void set_rows(const JointFrameState& state, TargetOf&& target_of) {
+        withdraw_pushes();
         set_geometry(state);
-        rows_ = 0;
+        rows_ = pushes_ = 0;
         for (std::size_t i = 0; i < kDofCount; ++i) {
             const std::optional<OdeRowTarget> target = target_of(i);
             if (!target) continue;
             targets_[i] = *target;
-            rows_ |= static_cast<std::uint8_t>(1u << i);
+            (target->pinned() ? pushes_ : rows_) |= static_cast<std::uint8_t>(1u << i);
         }
+        if (rows_ == 0 && pushes_ != 0) keep_one_push_as_row();
         count_rows();
+        if (pushes_ != 0) apply_pushes(1.0);
     }
 
-    // The generalised forces the rows applied to b in the step they were set for
-    // (joint_frame_loads), from what ODE's feedback says they applied (on_b).
+    // The step solved the joint: ODE applied the pushes and cleared its bodies' accumulators.
+    void pushes_taken() { pushes_applied_ = false; }
+    // Takes back pushes no step has taken (a joint that breaks, or goes, while its bodies sleep).
+    void withdraw_pushes() {
+        if (pushes_applied_) apply_pushes(-1.0);
+    }
+    // Adds the loads the pushes put on b and on a (world frame, torques about each centre, as ODE's
+    // feedback) to what ODE's feedback says the rows applied: the joint's whole action.
+    void add_pushes(WorldLoad& on_b, WorldLoad& on_a) const {
+        if (pushes_ != 0) add_each_push(on_b, on_a);  // inline: most joints have none (rigid-plastic)
+    }
+
+    // The generalised forces the rows and pushes applied to b in the step they were set for
+    // (joint_frame_loads), from their whole load on b (on_b, add_pushes).
     PerDof<double> forces_on_b(const WorldLoad& on_b) const {
         return joint_frame_loads(on_b, difference(axes_.anchor, lever_b_), axes_);
     }
@@ -79,6 +106,19 @@ private:
     void set_geometry(const JointFrameState& state);
     void count_rows();
     bool has_row(std::size_t i) const { return (rows_ >> i) & 1u; }
+    bool has_push(std::size_t i) const { return (pushes_ >> i) & 1u; }
+    // Dof i's row: J on b and on a (the linear parts 0 for a rotation row).
+    struct RowJacobian {
+        Vec3 linear_b, angular_b, linear_a, angular_a;
+    };
+    RowJacobian jacobian(std::size_t i) const;
+    // The lowest pushed dof becomes a row again: an unreachable rate bounded by its force.
+    void keep_one_push_as_row();
+    // Dof i's row load Jᵀ·f on b and on a (world frame, torques about each body's centre).
+    void add_row_load(std::size_t i, double f, WorldLoad& on_b, WorldLoad& on_a) const;
+    void add_each_push(WorldLoad& on_b, WorldLoad& on_a) const;
+    // Adds sign × the pushes' loads to the bodies' accumulators; pushes_applied_ after +1.
+    void apply_pushes(double sign);
 
     // The rows of the next step: the joint's axes and levers as measured, and each dof's target
     // where it has a row (a bit each in rows_, not a std::optional's flag each: 48 B less for a
@@ -86,9 +126,11 @@ private:
     JointAxesInWorld axes_{};
     Vec3 lever_b_{}, lever_a_{};  // anchor − centre of b, of a [m]
     PerDof<OdeRowTarget> targets_{};
-    std::uint8_t rows_ = 0;  // bit i: dof i has a row
+    std::uint8_t rows_ = 0;    // bit i: dof i has a row
+    std::uint8_t pushes_ = 0;  // bit i: dof i's target is pinned, a push on the bodies
     std::uint8_t count_ = 0;
     bool all_unbounded_ = false;
+    bool pushes_applied_ = false;  // in the bodies' accumulators, not yet taken by a step
 };
 
 }  // namespace plascap

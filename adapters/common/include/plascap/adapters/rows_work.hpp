@@ -39,8 +39,6 @@ public:
     double total() const { return counting_ ? counting_->total : 0.0; }  // [J], since the joint took hold
 
 private:
-    static Vec3 scaled(const Vec3& v, double s) { return {v[0] * s, v[1] * s, v[2] * s}; }
-
     // Held apart, made only when counting starts: a joint that does not count keeps 8 bytes here
     // rather than 120, which a step of 10,000 joints would wait on memory for (issue 16).
     struct Counting {

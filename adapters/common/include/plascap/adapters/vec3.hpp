@@ -16,6 +16,13 @@ inline Vec3 cross(const Vec3& a, const Vec3& b) {
 
 inline Vec3 difference(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 
+inline Vec3 scaled(const Vec3& v, double s) { return {v[0] * s, v[1] * s, v[2] * s}; }
+
+// sum += s·v
+inline void add_scaled(Vec3& sum, const Vec3& v, double s) {
+    sum[0] += v[0] * s, sum[1] += v[1] * s, sum[2] += v[2] * s;
+}
+
 inline double norm(const Vec3& v) { return std::sqrt(dot(v, v)); }
 
 // v/|v|; the zero vector stays zero.

@@ -4,7 +4,8 @@
 // own type (src/ode_plastic_rows.hpp, on ODE's joint object) with exactly the rows the dofs need,
 // all at the anchor: none for a free dof, a rigid row (unbounded, Baumgarte target at ERP
 // kHoldCorrection) for a rigid one, and for a plastic one the row the law commands (Hold: a rate
-// target within the force range [lower, upper], both capacities at once; Push: the spring force).
+// target within the force range [lower, upper], both capacities at once; Push: the spring force,
+// put on the bodies as a force and torque rather than a row that ODE would iterate).
 // Rotations are measured as swing and twist (swing_twist.hpp), as plascap's Bullet constraint
 // measures them, so a dof means the same in both engines; their rows lie along the angles'
 // gradients. The joint's feedback (dJointFeedback, world frame, torque about b's centre) is handed
