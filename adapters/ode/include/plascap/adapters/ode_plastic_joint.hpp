@@ -18,6 +18,10 @@
 // hand: construct after the bodies; engage(now) when the joint takes hold (its positions then are
 // its unloaded state); then before_step(dt) before each dWorldStep/dWorldQuickStep and
 // after_step(dt) after it.
+// A spring's push waits in the bodies' force and torque accumulators from the plan to the step
+// (OdePlasticJoints plans a joint's next step as it settles the last): add loads with
+// dBodyAddForce/dBodyAddTorque, as ODE intends; dBodySetForce/dBodySetTorque on a joined body
+// between two steps would erase the push.
 #include <ode/ode.h>
 
 #include <optional>
