@@ -10,21 +10,10 @@
 
 #include "plascap/adapters/vec3.hpp"
 #include "plascap/adapters/plastic_joint_settings.hpp"
+#include "plascap/adapters/structure_model.hpp"
 #include "plascap/materials/catalogue.hpp"
 
 namespace plascap {
-
-using Quaternion = std::array<double, 4>;  // w, x, y, z; unit length
-
-// A structure member's cross section as a replay draws it (the segment extruded along its y):
-// each part's outer ring and holes in the segment's x–z plane, from the member's line [m].
-using Outline = std::vector<std::array<double, 2>>;  // (x, z)
-struct OutlinePart {
-    Outline outer;
-    std::vector<Outline> holes;
-    bool operator==(const OutlinePart& o) const { return outer == o.outer && holes == o.holes; }
-};
-using SectionOutline = std::vector<OutlinePart>;
 
 struct SceneBody {
     std::string name;
@@ -42,12 +31,6 @@ struct SceneBody {
     std::optional<std::size_t> outline;  // a structure's segment: its section, in Scene::outlines
 };
 
-// A point of a body that a structure names (a node), or where a load acts.
-struct BodyPoint {
-    std::size_t body = 0;
-    Vec3 local{};  // in the body's frame, from its centre [m]
-};
-
 // An external force and moment on a body, in world directions, scaled by a piecewise-linear
 // factor of time (constant beyond its ends; none: 1).
 struct SceneLoad {
@@ -59,23 +42,11 @@ struct SceneLoad {
     double factor(double time) const;
 };
 
-struct SceneNode {
-    std::string name;
-    Vec3 position{};  // where it starts [m]
-    BodyPoint at;     // the material point that carries it: of the first segment that meets it
-};
+using SceneNode = StructureNode;  // a structure's node: a material point to report
 
-struct SceneJoint {
-    std::string name;
-    std::optional<std::size_t> a;  // index into Scene::bodies; empty = the world
-    std::size_t b = 0;
-    Vec3 anchor{};             // [m], world
-    std::array<Vec3, 3> axes{};  // joint x, y (beam axis), z in world: orthonormal, right-handed
-    PlasticJointSettings settings;
+// A joint: one of a structure's (its bodies then index Scene::bodies) or one placed by hand.
+struct SceneJoint : StructureJoint {
     double engage_at = 0.0;  // [s]: the joint joins the world at the step starting nearest this time
-    // [s]: the joint breaks in the step starting nearest this time, whatever its load (a structure's
-    // member "removed_at" then)
-    std::optional<double> severed_at;
 };
 
 struct Scene {
