@@ -47,7 +47,7 @@ TEST(Readme, LibraryExamplesAreExcerptsOfTheConsumerProject) {
             if (found < source.size()) at = found + 1;
         }
     }
-    EXPECT_EQ(excerpts, 2);  // Bullet and ODE
+    EXPECT_EQ(excerpts, 3);  // Bullet, ODE, and a structure on Bullet
 }
 
 }  // namespace
