@@ -11,14 +11,13 @@
 #include <vector>
 
 #include "plascap/adapters/bullet_plastic_joint.hpp"
+#include "plascap/adapters/bullet_vec3.hpp"
 #include "plascap/adapters/bullet_world.hpp"
 #include "plascap/adapters/structure_model.hpp"
 #include "plascap/materials/catalogue.hpp"
 #include "plascap/sections/shape_designation.hpp"
 
 namespace {
-
-btVector3 bt(const plascap::Vec3& v) { return btVector3(v[0], v[1], v[2]); }
 
 // The cantilever A–C as members and nodes, built into segments and joints.
 plascap::StructureModel cantilever_model(double L) {
@@ -41,23 +40,21 @@ double support_rotation(const plascap::StructureModel& model, const plascap::Vec
     std::vector<std::unique_ptr<plascap::BulletBox>> bodies;
     for (const plascap::StructureSegment& s : model.segments) {
         const btQuaternion q(s.orientation[1], s.orientation[2], s.orientation[3], s.orientation[0]);
-        const btVector3 inertia = bt(s.inertia);
-        bodies.push_back(std::make_unique<plascap::BulletBox>(bt(s.size) * 0.5, s.mass, btTransform(q, bt(s.position)), &inertia));
+        const btVector3 inertia = plascap::to_bt(s.inertia);
+        bodies.push_back(std::make_unique<plascap::BulletBox>(plascap::to_bt(s.size) * 0.5, s.mass, btTransform(q, plascap::to_bt(s.position)), &inertia));
         world.world().addRigidBody(&bodies.back()->body());
     }
     std::vector<std::unique_ptr<plascap::BulletPlasticJoint>> joints;
     for (const plascap::StructureJoint& j : model.joints) {
-        const auto& [x, y, z] = j.axes;
-        const btTransform frame(btMatrix3x3(x[0], y[0], z[0], x[1], y[1], z[1], x[2], y[2], z[2]), bt(j.anchor));  // columns x, y, z
-        btRigidBody* a = j.a ? &bodies[*j.a]->body() : nullptr;
-        joints.push_back(std::make_unique<plascap::BulletPlasticJoint>(a, bodies[j.b]->body(), frame, j.settings));
+        btRigidBody* a = j.a ? &bodies[*j.a]->body() : nullptr;  // none: the world
+        joints.push_back(std::make_unique<plascap::BulletPlasticJoint>(a, bodies[j.b]->body(), plascap::to_transform(j.frame()), j.settings));
         joints.back()->attach(world.world(), dt);
     }
     const plascap::BodyPoint tip = model.nodes.back().at;  // node C, carried by the last segment
     btRigidBody& end = bodies[tip.body]->body();
     for (int i = 0; i < 1000; ++i) {
         const double ramp = std::fmin(1.0, i * dt);
-        end.applyForce(bt(load) * ramp, end.getWorldTransform().getBasis() * bt(tip.local));
+        end.applyForce(plascap::to_bt(load) * ramp, end.getWorldTransform().getBasis() * plascap::to_bt(tip.local));
         world.step(dt);
     }
     const double rotation = joints.back()->law().plastic_rotation();  // the support, the last joint

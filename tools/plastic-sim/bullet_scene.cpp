@@ -5,21 +5,13 @@
 #include <vector>
 
 #include "plascap/adapters/bullet_plastic_joint.hpp"
+#include "plascap/adapters/bullet_vec3.hpp"
 #include "plascap/adapters/bullet_world.hpp"
 #include "joint_schedule.hpp"
 #include "scene_engine.hpp"
 
 namespace plascap {
 namespace {
-
-btVector3 bt(const Vec3& v) { return btVector3(v[0], v[1], v[2]); }
-Vec3 vec(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
-
-btTransform joint_frame(const SceneJoint& joint) {
-    const auto& [x, y, z] = joint.axes;
-    const btMatrix3x3 basis(x[0], y[0], z[0], x[1], y[1], z[1], x[2], y[2], z[2]);  // columns x, y, z
-    return btTransform(basis, bt(joint.anchor));
-}
 
 // The collision group of a structure's segments (a bit Bullet's default groups leave free).
 constexpr int kStructureGroup = 64;
@@ -28,7 +20,7 @@ template <class Joint>
 class BulletScene : public SceneEngine {
 public:
     BulletScene(const Scene& scene, const char* constraint)
-        : scene_(scene), constraint_(constraint), world_(bt(scene.gravity), scene.iterations), schedule_(scene) {
+        : scene_(scene), constraint_(constraint), world_(to_bt(scene.gravity), scene.iterations), schedule_(scene) {
         // One solve for the world: Bullet's per-island solve finds each island's constraints by
         // scanning all of them, O(n²) per step (docs/adapters.md, "Cost"); the islands do not
         // interact, so one solve gives them the same rows.
@@ -36,12 +28,12 @@ public:
         world_.count_contact_work();  // the ledger's contacts (energy_ledger.hpp)
         for (const SceneBody& b : scene.bodies) {
             const btQuaternion q(b.orientation[1], b.orientation[2], b.orientation[3], b.orientation[0]);
-            const btVector3 inertia = b.inertia ? bt(*b.inertia) : btVector3(0, 0, 0);
-            boxes_.push_back(std::make_unique<BulletBox>(bt(b.size) * 0.5, b.is_static ? 0.0 : b.mass,
-                                                         btTransform(q, bt(b.position)), b.inertia ? &inertia : nullptr));
+            const btVector3 inertia = b.inertia ? to_bt(*b.inertia) : btVector3(0, 0, 0);
+            boxes_.push_back(std::make_unique<BulletBox>(to_bt(b.size) * 0.5, b.is_static ? 0.0 : b.mass,
+                                                         btTransform(q, to_bt(b.position)), b.inertia ? &inertia : nullptr));
             btRigidBody& body = boxes_.back()->body();
-            body.setLinearVelocity(bt(b.velocity));
-            body.setAngularVelocity(bt(b.angular_velocity));
+            body.setLinearVelocity(to_bt(b.velocity));
+            body.setAngularVelocity(to_bt(b.angular_velocity));
             if (b.structure) {  // a structure's segments pass through each other, and collide with the rest
                 world_.world().addRigidBody(&body, kStructureGroup, btBroadphaseProxy::AllFilter ^ kStructureGroup);
             } else {
@@ -50,7 +42,7 @@ public:
         }
         for (const SceneJoint& j : scene.joints) {
             btRigidBody* a = j.a ? &boxes_[*j.a]->body() : nullptr;
-            joints_.push_back(std::make_unique<Joint>(a, boxes_[j.b]->body(), joint_frame(j), j.settings));
+            joints_.push_back(std::make_unique<Joint>(a, boxes_[j.b]->body(), to_transform(j.frame()), j.settings));
             joints_.back()->count_rows_work();  // for the energy ledger
         }
     }
@@ -79,14 +71,14 @@ public:
 
     void apply_load(std::size_t index, const Vec3& force, const Vec3& point, const Vec3& moment) override {
         btRigidBody& b = boxes_[index]->body();
-        b.applyForce(bt(force), bt(point) - b.getCenterOfMassPosition());
-        b.applyTorque(bt(moment));
+        b.applyForce(to_bt(force), to_bt(point) - b.getCenterOfMassPosition());
+        b.applyTorque(to_bt(moment));
     }
 
     BodyState body(std::size_t index) const override {
         const btRigidBody& b = boxes_[index]->body();
         const btQuaternion q = b.getOrientation();
-        return {vec(b.getCenterOfMassPosition()), vec(b.getLinearVelocity()), vec(b.getAngularVelocity()),
+        return {to_vec3(b.getCenterOfMassPosition()), to_vec3(b.getLinearVelocity()), to_vec3(b.getAngularVelocity()),
                 Quaternion{q.w(), q.x(), q.y(), q.z()}};
     }
 

@@ -67,10 +67,7 @@ public:
         for (const SceneBody& b : scene.bodies) add_body(b);
         for (const SceneJoint& j : scene.joints) {
             const dBodyID a = j.a ? bodies_[*j.a] : nullptr;  // a static body holds like the world
-            Pose frame;
-            frame.origin = j.anchor;
-            for (int r = 0; r < 3; ++r) frame.rotation[r] = {j.axes[0][r], j.axes[1][r], j.axes[2][r]};
-            joints_.add(a, bodies_[j.b], frame, j.settings, j.engage_at).count_rows_work();  // for the energy ledger
+            joints_.add(a, bodies_[j.b], j.frame(), j.settings, j.engage_at).count_rows_work();  // for the energy ledger
         }
     }
 

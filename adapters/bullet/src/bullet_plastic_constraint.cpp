@@ -8,14 +8,7 @@
 namespace plascap {
 namespace {
 
-btVector3 to_bt(const Vec3& v) { return {btScalar(v[0]), btScalar(v[1]), btScalar(v[2])}; }
-
 constexpr double kTurn = 2.0 * 3.14159265358979323846;  // [rad]
-
-Pose to_pose(const btTransform& t) {
-    const btMatrix3x3& r = t.getBasis();
-    return {to_vec3(t.getOrigin()), {to_vec3(r[0]), to_vec3(r[1]), to_vec3(r[2])}};  // rows
-}
 
 void store(btScalar* at, const btVector3& v) {
     at[0] = v.x(), at[1] = v.y(), at[2] = v.z();

@@ -3,12 +3,13 @@
 // becomes `segments` rigid bodies with the real member's mass and inertia (not a box's), joined by
 // plastic hinges whose capacities and stiffness come from the section and the segment's length;
 // members meeting at a node and supports are joined the same way. Make each segment a body of your
-// engine, then each joint a BulletPlasticJoint or an OdePlasticJoints::add with its frame.
+// engine, then each joint a BulletPlasticJoint or an OdePlasticJoints::add with its frame().
 #include <array>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "plascap/adapters/joint_frame.hpp"
 #include "plascap/adapters/plastic_joint_settings.hpp"
 #include "plascap/adapters/structure.hpp"
 #include "plascap/adapters/vec3.hpp"
@@ -52,6 +53,15 @@ struct StructureJoint {
     std::array<Vec3, 3> axes{};  // joint x, y (beam axis), z in world: orthonormal, right-handed
     PlasticJointSettings settings;
     std::optional<double> severed_at;  // [s]: it breaks then, whatever its load (a removed member)
+
+    // Its frame in the world, origin the anchor: what OdePlasticJoints::add takes, and
+    // BulletPlasticJoint as to_transform(frame()) (bullet_vec3.hpp).
+    Pose frame() const {
+        Pose p;
+        p.origin = anchor;
+        for (int r = 0; r < 3; ++r) p.rotation[r] = {axes[0][r], axes[1][r], axes[2][r]};  // columns x, y, z
+        return p;
+    }
 };
 
 struct StructureNode {
