@@ -1,8 +1,6 @@
-// A structure from members and nodes on Bullet, through an installed plascap: a 2 m IPE 200 S355
-// cantilever, fixed at A, in four segments (plascap::structures), carries a tip load P at C. Rigid-
-// plastic theory puts its collapse at P_c = M_p/L (a hinge at the support; e.g. Neal, "The Plastic
-// Methods of Structural Analysis", ch. 2), M_p = W_pl·fy = 220.6 cm³ × 355 MPa = 78.3 kN·m: at
-// 0.9 P_c the support holds (no plastic rotation), at 1.1 P_c it turns into a hinge.
+// A structure from members and nodes on Bullet, through an installed plascap: the cantilever of
+// cantilever_structure.hpp (plascap::structures) carries a tip load P at C. At 0.9 P_c = 0.9 M_p/L
+// the support holds (no plastic rotation), at 1.1 P_c it turns into a hinge.
 #include <btBulletDynamicsCommon.h>
 
 #include <cmath>
@@ -14,24 +12,10 @@
 #include "plascap/adapters/bullet_vec3.hpp"
 #include "plascap/adapters/bullet_world.hpp"
 #include "plascap/adapters/structure_model.hpp"
-#include "plascap/materials/catalogue.hpp"
-#include "plascap/sections/shape_designation.hpp"
+
+#include "cantilever_structure.hpp"
 
 namespace {
-
-// The cantilever A–C as members and nodes, built into segments and joints.
-plascap::StructureModel cantilever_model(double L) {
-    plascap::Structure cantilever;
-    cantilever.nodes = {{"A", {0, 0, 0}}, {"C", {L, 0, 0}}};
-    plascap::StructureMember m;
-    m.name = "AC", m.from = "A", m.to = "C", m.z_axis = plascap::Vec3{0, 1, 0}, m.segments = 4;
-    m.section = std::make_shared<const plascap::ValidSection>(plascap::validate_section(
-        plascap::shape_section("IPE 200", plascap::MaterialCatalogue::built_in().get("S355", "example"))));
-    cantilever.members.push_back(m);
-    cantilever.supports["A"] = plascap::StructureSupport::fixed();
-    const plascap::StructureModel model = plascap::build_structure(cantilever);  // 4 segments, 3 joints + the support
-    return model;
-}
 
 // The support's plastic rotation [rad] after a tip load of `load` [N], ramped over 1 s and held 1 s.
 double support_rotation(const plascap::StructureModel& model, const plascap::Vec3& load) {
@@ -66,8 +50,8 @@ double support_rotation(const plascap::StructureModel& model, const plascap::Vec
 }  // namespace
 
 int main() {
-    const double L = 2.0, Mp = 220.6e-6 * 355e6;
-    const plascap::StructureModel model = cantilever_model(L);
+    const double L = kCantileverLength, Mp = kCantileverMp;
+    const plascap::StructureModel model = cantilever_model();
 
     const double holds = support_rotation(model, {0, -0.9 * Mp / L, 0}), folds = support_rotation(model, {0, -1.1 * Mp / L, 0});
     std::printf("%zu segments, %zu joints; support's plastic rotation at 0.9 Mp/L: %.5f rad, at 1.1 Mp/L: %.3f rad\n",
