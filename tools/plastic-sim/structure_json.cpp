@@ -1,5 +1,6 @@
 #include "structure_json.hpp"
 
+#include <algorithm>
 #include <map>
 #include <memory>
 #include <set>
@@ -31,11 +32,9 @@ StructureMember parse_member(const Json& m, const std::string& where_in, const M
     member.from = text(scene_json::member(m, "from", where), where + ".from");
     member.to = text(scene_json::member(m, "to", where), where + ".to");
     if (m.contains("z_axis")) member.z_axis = vec3(m["z_axis"], where + ".z_axis");
-    if (m.contains("segments")) {
+    if (m.contains("segments")) {  // anything but a whole number in range: 0, which the builder refuses with its message
         const Json& n = m["segments"];
-        if (!n.is_number_integer() || n.get<long long>() < 1 || n.get<long long>() > 1000)
-            throw InputError(where + ".segments: expected a whole number from 1 to 1000");
-        member.segments = static_cast<int>(n.get<long long>());
+        member.segments = n.is_number_integer() ? static_cast<int>(std::clamp<long long>(n.get<long long>(), 0, kMaxMemberSegments + 1)) : 0;
     }
     if (m.contains("removed_at")) member.removed_at = finite_number(m["removed_at"], where + ".removed_at");
     if (!m.contains("shape") && !m.contains("section")) throw InputError(where + ": a member needs a \"shape\" or a \"section\"");

@@ -126,7 +126,8 @@ private:
         const double length = norm(span);
         if (!(length > 1e-6)) throw InputError(where + ": has zero length (\"" + m.from + "\" and \"" + m.to + "\" coincide)");
         b.frame = detail::member_frame(m.z_axis, scaled(span, 1.0 / length), structure_.gravity, where);
-        if (m.segments < 1 || m.segments > 1000) throw InputError(where + ".segments: expected a whole number from 1 to 1000");
+        if (m.segments < 1 || m.segments > kMaxMemberSegments)
+            throw InputError(where + ".segments: expected a whole number from 1 to " + std::to_string(kMaxMemberSegments));
         if (m.removed_at && !(*m.removed_at >= 0.0)) throw InputError(where + ".removed_at: must not be negative");
         if (!m.section) throw InputError(where + ": a member needs a section");
         const ValidSection& section = *m.section;

@@ -16,6 +16,8 @@
 
 namespace plascap {
 
+constexpr int kMaxMemberSegments = 1000;  // a member's segments: 1 to this
+
 struct StructureMember {
     std::string name;
     std::string from, to;  // node names; the member's axis y runs from `from` to `to`
@@ -23,7 +25,7 @@ struct StructureMember {
     // one section object share its joint settings, computed once (T_p and J take a mesh each).
     std::shared_ptr<const ValidSection> section;
     std::optional<Vec3> z_axis;  // the section's z (its depth) in the world; none: against gravity (world x for a member along it)
-    int segments = 4;            // rigid bodies, joined by plastic joints at their ends (1 to 1000)
+    int segments = 4;            // rigid bodies, joined by plastic joints at their ends (1 to kMaxMemberSegments)
     // The joints' yield surface (coupled or box) and torsion capacity; their modes are set here:
     // rotations plastic (hinges), translations rigid.
     SectionJointOptions options;
