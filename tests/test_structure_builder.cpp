@@ -174,6 +174,18 @@ TEST(StructureBuilder, BadInputNamesTheMemberNodeOrSupport) {
     s.members[0].section = std::make_shared<const ValidSection>(validate_section(shape_section("IPE 200", no_density)));
     EXPECT_EQ(error_of(s), "member \"col\": the material \"steel\" needs a density (the member's mass)");
     s = l_frame();
+    s.nodes["B"][1] = std::nan("");
+    EXPECT_EQ(error_of(s), "node \"B\": its position is not finite");
+    s = l_frame();
+    s.members[0].z_axis = Vec3{INFINITY, 0, 0};
+    EXPECT_EQ(error_of(s), "member \"col\".z_axis: is not finite");
+    s = l_frame();
+    s.members[0].removed_at = std::nan("");
+    EXPECT_EQ(error_of(s), "member \"col\".removed_at: is not a finite time");
+    s = l_frame();
+    s.members[0].removed_at = -1.0;
+    EXPECT_EQ(error_of(s), "member \"col\".removed_at: must not be negative");
+    s = l_frame();
     s.supports["Q"] = StructureSupport::fixed();
     EXPECT_EQ(error_of(s), "supports.Q: no node named \"Q\"");
     s = l_frame();

@@ -63,6 +63,8 @@ const Vec3& node_at(const Structure& s, const std::string& name, const std::stri
     return it->second;
 }
 
+bool finite(const Vec3& v) { return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]); }
+
 // Members of one section share its joint settings, computed once for a 1 m segment and scaled to
 // each member's segment length: by section object, yield surface and torsion capacity.
 using SettingsKey = std::tuple<const ValidSection*, bool, TorsionCapacity>;
@@ -72,6 +74,8 @@ public:
     explicit Builder(const Structure& s) : structure_(s) {}
 
     StructureModel build() {
+        for (const auto& [name, at] : structure_.nodes)
+            if (!finite(at)) throw InputError("node \"" + name + "\": its position is not finite");
         std::set<std::string> names;
         for (std::size_t i = 0; i < structure_.members.size(); ++i) {
             add_member(structure_.members[i], i);
@@ -125,10 +129,12 @@ private:
         const Vec3 span = difference(node_at(structure_, m.to, where + ".to"), b.start);
         const double length = norm(span);
         if (!(length > 1e-6)) throw InputError(where + ": has zero length (\"" + m.from + "\" and \"" + m.to + "\" coincide)");
+        if (m.z_axis && !finite(*m.z_axis)) throw InputError(where + ".z_axis: is not finite");
         b.frame = detail::member_frame(m.z_axis, scaled(span, 1.0 / length), structure_.gravity, where);
         if (m.segments < 1 || m.segments > kMaxMemberSegments)
             throw InputError(where + ".segments: expected a whole number from 1 to " + std::to_string(kMaxMemberSegments));
-        if (m.removed_at && !(*m.removed_at >= 0.0)) throw InputError(where + ".removed_at: must not be negative");
+        if (m.removed_at && !std::isfinite(*m.removed_at)) throw InputError(where + ".removed_at: is not a finite time");
+        if (m.removed_at && *m.removed_at < 0.0) throw InputError(where + ".removed_at: must not be negative");
         if (!m.section) throw InputError(where + ": a member needs a section");
         const ValidSection& section = *m.section;
         const double mu = mass_per_length(section, where);

@@ -77,9 +77,10 @@ struct StructureModel {
     std::vector<SectionOutline> outlines;  // each distinct section once, simplified for drawing
 };
 
-// Throws InputError naming the member, node or support at fault: an unknown node, a zero-length
-// member, a z_axis along the member, a member without a section or with a material without density,
-// two members of one name, a support that restrains nothing or holds a node no member meets.
+// Throws InputError naming the member, node or support at fault: a node not finite, an unknown node,
+// a zero-length member, a z_axis along the member or not finite, segments out of range, a removal
+// time not finite or negative, a member without a section or with a material without density, two
+// members of one name, a support that restrains nothing or holds a node no member meets.
 StructureModel build_structure(const Structure& structure);
 
 }  // namespace plascap
