@@ -20,6 +20,15 @@ void store(dReal* at, const Vec3& v) {
 // force range stays [−|F|, |F|]: ODE's dWorldStep (Dantzig) needs lower ≤ 0 ≤ upper.
 constexpr double kPushSpeed = 1e4;
 
+// sign × load into the body's force and torque accumulators. A joint whose body has gone
+// (dBodyDestroy detaches its joints) has nothing to push.
+void add_to_accumulators(dxBody* body, const WorldLoad& load, double sign) {
+    if (!body) return;
+    const Vec3 f = scaled(load.force, sign), t = scaled(load.torque_about_com, sign);
+    dBodyAddForce(body, f[0], f[1], f[2]);
+    dBodyAddTorque(body, t[0], t[1], t[2]);
+}
+
 }  // namespace
 
 OdePlasticRows::RowJacobian OdePlasticRows::jacobian(std::size_t i) const {
@@ -122,17 +131,8 @@ void OdePlasticRows::add_each_push(WorldLoad& on_b, WorldLoad& on_a) const {
 void OdePlasticRows::apply_pushes(double sign) {
     WorldLoad on_b, on_a;
     add_each_push(on_b, on_a);
-    dxBody* b = node[0].body;
-    dxBody* a = node[1].body;
-    // A joint whose body has gone (dBodyDestroy detaches its joints) has nothing to push.
-    if (b) {
-        dBodyAddForce(b, sign * on_b.force[0], sign * on_b.force[1], sign * on_b.force[2]);
-        dBodyAddTorque(b, sign * on_b.torque_about_com[0], sign * on_b.torque_about_com[1], sign * on_b.torque_about_com[2]);
-    }
-    if (a) {
-        dBodyAddForce(a, sign * on_a.force[0], sign * on_a.force[1], sign * on_a.force[2]);
-        dBodyAddTorque(a, sign * on_a.torque_about_com[0], sign * on_a.torque_about_com[1], sign * on_a.torque_about_com[2]);
-    }
+    add_to_accumulators(node[0].body, on_b, sign);
+    add_to_accumulators(node[1].body, on_a, sign);
     pushes_applied_ = sign > 0.0;
 }
 
