@@ -7,9 +7,11 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "body_energy.hpp"
+#include "exact_step_cost.hpp"
 #include "plascap/input_error.hpp"
 #include "scene.hpp"
 #include "scene_errors.hpp"
@@ -117,6 +119,36 @@ TEST(Structures, TheLargeExampleHasOverAThousandJoints) {
     EXPECT_EQ(s.joints.size(), 1175u);
     const auto severed = std::count_if(s.joints.begin(), s.joints.end(), [](const SceneJoint& j) { return j.severed_at.has_value(); });
     EXPECT_EQ(severed, 2);  // the removed column's support and its joint at node 1.1.1
+}
+
+// ode-step's dense solve (exact_step_cost.hpp) sizes each island by its joints' rows before the run.
+// The large example is one island: every one of its 1,175 joints holds six dofs (rigid connections,
+// fixed bases), 7,050 rows, at about a minute a step, so the 1,500 steps are announced as hours.
+TEST(Structures, OdeStepForeseesTheLargeExamplesDenseSolve) {
+    const Scene large = read_scene_file(PLASCAP_SOURCE_DIR "/examples/large/multistorey-frame.json");
+    const Island island = largest_island(large);
+    EXPECT_EQ(island.bodies, 1020u);
+    EXPECT_EQ(island.rows, 7050u);
+    const std::optional<std::string> warning = exact_step_warning(large);
+    ASSERT_TRUE(warning.has_value());
+    EXPECT_NE(warning->find("7050 rows (1020 bodies"), std::string::npos) << *warning;
+    EXPECT_NE(warning->find("--engine ode (dWorldQuickStep)"), std::string::npos) << *warning;
+}
+
+// The example beam: 10 segments, 9 joints of six rows between them, the pin at A holding three
+// translations and the twist (4 rows) and the roller at C two translations: 60 rows, which dWorldStep
+// solves in milliseconds — no warning. Two such beams side by side are two islands of 60.
+TEST(Structures, OdeStepCountsEachIslandsRowsAndStaysQuietOnSmallOnes) {
+    const Scene one = parse_scene_json(beam(kSimple, 40000, 100));
+    EXPECT_EQ(largest_island(one).bodies, 10u);
+    EXPECT_EQ(largest_island(one).rows, 60u);
+    EXPECT_FALSE(exact_step_warning(one).has_value());
+    const std::string two = R"({"dt": 0.002, "duration": 2, "gravity": [0, 0, 0], "nodes": {"A": [0, 0, 0], "C": [4, 0, 0],
+        "D": [0, 0, 1], "F": [4, 0, 1]}, "members": [)" + member("AC", "A", "C", "[0, 1, 0]", 10) + ", " +
+                            member("DF", "D", "F", "[0, 1, 0]", 10) + R"(], "supports": {"A": "fixed", "D": "fixed"}})";
+    const Island island = largest_island(parse_scene_json(two));
+    EXPECT_EQ(island.bodies, 10u);
+    EXPECT_EQ(island.rows, 9u * 6u + 6u);
 }
 
 TEST(Structures, BadInputNamesTheMemberNodeSupportOrLoad) {

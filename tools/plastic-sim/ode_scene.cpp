@@ -8,10 +8,12 @@
 #include <stdexcept>
 #include <string>
 #include <memory>
+#include <optional>
 #include <set>
 #include <utility>
 #include <vector>
 
+#include "exact_step_cost.hpp"
 #include "joint_schedule.hpp"
 #include "plascap/adapters/ode_plastic_joints.hpp"
 #include "scene_engine.hpp"
@@ -69,6 +71,7 @@ public:
             const dBodyID a = j.a ? bodies_[*j.a] : nullptr;  // a static body holds like the world
             joints_.add(a, bodies_[j.b], j.frame(), j.settings, j.engage_at).count_rows_work();  // for the energy ledger
         }
+        if (!quick) slow_steps_ = exact_step_warning(scene);
     }
 
     ~OdeScene() override {
@@ -129,10 +132,12 @@ public:
     PerDof<double> joint_positions(std::size_t index) override { return joints_[index].positions(); }
 
     std::vector<std::string> warnings() const override {
+        std::vector<std::string> w;
+        if (slow_steps_) w.push_back(*slow_steps_);
         const OdeMessages& m = ode_messages();
-        if (m.count == 0) return {};
-        return {std::to_string(m.count) + " message(s) from ODE, the first: \"" + m.first +
-                "\"; the steps concerned are unreliable"};
+        if (m.count != 0)
+            w.push_back(std::to_string(m.count) + " message(s) from ODE, the first: \"" + m.first + "\"; the steps concerned are unreliable");
+        return w;
     }
 
 private:
@@ -178,6 +183,7 @@ private:
 
     const Scene& scene_;
     bool quick_;
+    std::optional<std::string> slow_steps_;  // dWorldStep on a large island (exact_step_cost.hpp)
     JointSchedule schedule_;  // for severing; OdePlasticJoints engages
     dWorldID world_;
     OdePlasticJoints joints_;

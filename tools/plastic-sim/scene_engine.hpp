@@ -36,7 +36,8 @@ public:
     // The joint's dof positions now: b relative to a in the joint frame [m, rad].
     virtual PerDof<double> joint_positions(std::size_t index) = 0;
     // What the engine reported as going wrong but survived (e.g. ODE's "LCP internal error"): the
-    // results may be unreliable. An engine error it cannot survive is thrown as std::runtime_error.
+    // results may be unreliable; and, from the start, what it foresees (a run that will take hours).
+    // An engine error it cannot survive is thrown as std::runtime_error.
     virtual std::vector<std::string> warnings() const { return {}; }
     // The work the engine's position corrections did outside its velocity solve (Bullet's split
     // impulses), summed over the run [J]; 0 for engines that correct positions in their velocities.

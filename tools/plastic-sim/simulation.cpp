@@ -62,6 +62,8 @@ SimulationResult run_simulation(const Scene& scene, SceneEngine& engine, const S
     if (options.trace_csv) write_trace_header(*options.trace_csv, scene);
     EnergyAccount energy(scene, engine);
     if (options.replay) options.replay->record_start(engine, energy.ledger());
+    if (options.progress)  // what the engine foresees, before a run it may make long
+        for (const std::string& w : engine.warnings()) *options.progress << "plastic-sim: warning: " << w << std::endl;
     for (std::size_t i = 0; i < result.steps; ++i) {
         const std::vector<AppliedLoad> loads = apply_scene_loads(scene, engine);
         engine.step();
