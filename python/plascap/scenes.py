@@ -36,7 +36,9 @@ def _trace(text):
 def run_scene(scene, engine="bullet", trace=False):
     """Runs a scene (dict, JSON text or path) on `engine` (see engines()); returns its summary.
 
-    Bad scenes raise InputError with plastic-sim's message. The run releases the GIL."""
+    Bad scenes raise InputError with plastic-sim's message. What the engine foresees before the
+    run (ode-step on an island of thousands of rows: hours of dense solves) is a RuntimeWarning
+    first, and is in the summary's "warnings" too. The run releases the GIL."""
     text, is_path = _scene_argument(scene)
     summary, trace_csv = _plascap._run_scene(text, is_path, engine, trace)
     result = json.loads(summary)

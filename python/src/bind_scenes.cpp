@@ -32,6 +32,11 @@ std::pair<std::string, std::string> run_scene(const std::string& scene_text_or_p
     csv.precision(10);  // as plastic-sim --csv
     SimulationOptions options;
     if (trace) options.trace_csv = &csv;
+    // What the engine foresees (ode-step on a large island: hours of dense solves) is a
+    // RuntimeWarning before the run, as plastic-sim prints it on stderr: under
+    // warnings.simplefilter("error") it stops the run before it starts.
+    const py::object warn = py::module_::import("warnings").attr("warn");
+    for (const std::string& w : e->warnings()) warn(w, py::handle(PyExc_RuntimeWarning));
     SimulationResult result;
     {
         py::gil_scoped_release release;

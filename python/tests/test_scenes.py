@@ -2,7 +2,11 @@
 import csv
 import json
 import os
+import re
+import select
 import subprocess
+import sys
+import warnings
 
 import numpy
 import pytest
@@ -87,3 +91,36 @@ def test_the_trace_records_orientations_a_spinning_cube_turns_at_its_rate():
         assert numpy.allclose(trace["cube.qw"], numpy.cos(t), atol=1e-4), engine
         assert numpy.allclose(trace["cube.qz"], numpy.sin(t), atol=1e-4), engine
         assert numpy.allclose(trace["cube.qx"], 0, atol=1e-12) and numpy.allclose(trace["cube.qy"], 0, atol=1e-12), engine
+
+
+LARGE = os.path.join(SOURCE_DIR, "examples", "large", "multistorey-frame.json")
+ISLAND = r"largest island's 7050 rows \(1020 bodies joined by joints\).*--engine ode \(dWorldQuickStep\)"
+
+
+def test_ode_step_warns_before_a_run_of_hours():
+    # The large example is one island of 7,050 rows (1,175 joints of six): dWorldStep's dense solve
+    # takes about a minute a step. The warning comes before the first step, so warnings as errors
+    # stop the run at once. In a child process with a timeout: without the warning the run would
+    # take a day, and the test must fail, not hang.
+    code = f"import plascap; plascap.run_scene({LARGE!r}, engine='ode-step')"
+    run = subprocess.run([sys.executable, "-W", "error::RuntimeWarning", "-c", code], capture_output=True, text=True, timeout=120)
+    assert run.returncode != 0
+    assert re.search("RuntimeWarning: ode-step \\(dWorldStep\\) solves the " + ISLAND, run.stderr), run.stderr
+
+
+def test_plastic_sim_says_so_as_the_run_starts():
+    with subprocess.Popen([PLASTIC_SIM, LARGE, "--engine", "ode-step"], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                          text=True) as sim:
+        try:  # written before the first step, which takes a minute
+            ready, _, _ = select.select([sim.stderr], [], [], 60)
+            first = sim.stderr.readline() if ready else "nothing within 60 s"
+        finally:
+            sim.kill()
+    assert re.match("plastic-sim: warning: ode-step \\(dWorldStep\\) solves the " + ISLAND, first), first
+
+
+def test_small_scenes_run_without_a_warning():
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        result = plascap.run_scene(os.path.join(SCENES, "simply-supported-beam.json"), engine="ode-step")
+    assert result["warnings"] == []
