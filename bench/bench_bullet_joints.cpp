@@ -13,6 +13,7 @@
 
 #include "plascap/adapters/bullet_plastic_joint.hpp"
 #include "plascap/adapters/bullet_world.hpp"
+#include "hanging_box_springs.hpp"
 #include "joint_yield_settings.hpp"
 #include "vs_rigid.hpp"
 
@@ -81,43 +82,43 @@ void step_with_joints(benchmark::State& state, int n, bool split, const plascap:
         joints.back()->attach(scene.world.world(), kDt);
     }
     bench::time_steps(state, [&] { scene.world.step(kDt); }, [&] { rigid.world.step(kDt); }, n);
+    bench::count_springs(state, joints.size(), [&](std::size_t i) -> const plascap::PlasticJointLaw& { return joints[i]->law(); });
     joints.clear();  // each joint leaves the world as it is destroyed
 }
 
 // All six dofs plastic (capacities well above the load, so the boxes hang still as with the fixed
-// joints); elastic = 1 gives every dof an elastic stiffness (explicit spring rows): 5,000 N/m, so a
-// box sags 2 cm (ω·dt = 0.37, well inside eq. 3.2) and its AABB stays in the broadphase's margin as
-// the fixed joints' do, and 100 N·m/rad about the unloaded rotations.
-plascap::PlasticJointSettings all_six_plastic(bool elastic) {
+// joints); `springs` their stiffnesses (hanging_box_springs.hpp: none; stiff, four rigid-plastic rows
+// and two springs; sampled, six springs).
+plascap::PlasticJointSettings all_six_plastic(bench::Springs springs) {
     plascap::PlasticJointSettings settings;
     for (plascap::Dof dof : plascap::kAllDofs) {
         settings.modes[plascap::index(dof)] = plascap::DofMode::Plastic;
-        settings.laws[plascap::index(dof)] = plascap::DofLaw{1e5, 1e5, std::nullopt};
-        if (elastic) settings.laws[plascap::index(dof)].stiffness = plascap::is_rotation(dof) ? 100.0 : 5000.0;
+        settings.laws[plascap::index(dof)] = plascap::DofLaw{1e5, 1e5, bench::spring_stiffness(springs, dof)};
     }
     return settings;
 }
 
-// Arguments: elastic, joints, split islands. Plascap: the default BulletPlasticJoint; Spring2: the
+// Arguments: elastic (0 none, 1 stiff, 2 sampled springs: bench::Springs), joints, split islands;
+// counter `springs`: the dofs per joint that were springs (the others held as rows). Plascap: the default BulletPlasticJoint; Spring2: the
 // paper's route (a btGeneric6DofSpring2Constraint driven from outside).
 void Plascap(benchmark::State& state) {
     step_with_joints<plascap::BulletPlasticJoint>(state, static_cast<int>(state.range(1)), state.range(2) == 1,
-                                                  all_six_plastic(state.range(0) == 1));
+                                                  all_six_plastic(static_cast<bench::Springs>(state.range(0))));
 }
 // The default joint on Bullet's own solver: cold-started rows, Baumgarte in their velocities.
 void PlascapCold(benchmark::State& state) {
     step_with_joints<plascap::BulletPlasticJoint>(state, static_cast<int>(state.range(1)), state.range(2) == 1,
-                                                  all_six_plastic(state.range(0) == 1), plascap::BulletSolverKind::Bullet);
+                                                  all_six_plastic(static_cast<bench::Springs>(state.range(0))), plascap::BulletSolverKind::Bullet);
 }
 void Spring2(benchmark::State& state) {
     step_with_joints<plascap::BulletPlasticJointSpring2>(state, static_cast<int>(state.range(1)), state.range(2) == 1,
-                                                         all_six_plastic(state.range(0) == 1));
+                                                         all_six_plastic(static_cast<bench::Springs>(state.range(0))));
 }
 
 // Every size on one solve; 100 and 1,000 joints per island too (10,000 per island is the O(n²)
 // scan: minutes per run).
 void sizes(benchmark::internal::Benchmark* b, bool with_elastic) {
-    for (int elastic : with_elastic ? std::vector<int>{0, 1} : std::vector<int>{-1}) {
+    for (int elastic : with_elastic ? std::vector<int>{0, 1, 2} : std::vector<int>{-1}) {
         for (int n : {100, 1000, 10000}) {
             for (int split : {0, 1}) {
                 if (n == 10000 && split == 1) continue;
@@ -156,7 +157,7 @@ void Sleeping(benchmark::State& state) {
     std::vector<std::unique_ptr<plascap::BulletPlasticJoint>> joints;
     for (int i = 0; i < n; ++i) {
         joints.push_back(std::make_unique<plascap::BulletPlasticJoint>(nullptr, scene.boxes[i]->body(), scene.anchor(i),
-                                                                       all_six_plastic(false)));
+                                                                       all_six_plastic(bench::Springs::None)));
         joints.back()->attach(scene.world.world(), kDt);
     }
     for (HangingBoxes* boxes : {&rigid, &scene})

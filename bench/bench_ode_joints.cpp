@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "plascap/adapters/ode_plastic_joints.hpp"
+#include "hanging_box_springs.hpp"
 #include "joint_yield_settings.hpp"
 #include "vs_rigid.hpp"
 
@@ -86,32 +87,31 @@ void step_with_joints(benchmark::State& state, int n, const plascap::PlasticJoin
     auto joints = std::make_unique<plascap::OdePlasticJoints>(scene.world);
     for (int i = 0; i < n; ++i) joints->add(nullptr, scene.boxes[i], scene.anchor(i), settings);
     bench::time_steps(state, [&] { joints->step(kDt); }, [&] { dWorldQuickStep(rigid.world, kDt); }, n);
+    bench::count_springs(state, joints->size(), [&](std::size_t i) -> const plascap::PlasticJointLaw& { return (*joints)[i].law(); });
     joints.reset();  // before the world goes
 }
 
-// Capacities well above the load; elastic = 1 gives every plastic dof a stiffness (5,000 N/m and
-// 100 N·m/rad, as bench_bullet_joints); six = 1: all six dofs plastic, 0: translations rigid (a
-// plastic hinge). Includes the adapter's planning and settling. On these 10 kg boxes at 1/60 s the
-// rotations' springs are sampled (explicit pushes: forces on the box, not ODE rows) and the
-// translations' are past eq. 3.2's limit (ω·dt = √(k/m)·dt ≥ 0.37 > 0.25), so they hold as
-// rigid-plastic rows: six elastic-plastic dofs are three rows and three pushes.
-plascap::PlasticJointSettings plastic_settings(bool elastic, bool six) {
+// Capacities well above the load; `springs` their stiffnesses (hanging_box_springs.hpp, as
+// bench_bullet_joints: none; stiff, where only Mx and Mz are sampled springs — explicit pushes,
+// forces on the box, not ODE rows — and the other dofs are past eq. 3.2's limit and hold as
+// rigid-plastic rows; sampled, every plastic dof a spring); six = 1: all six dofs plastic, 0:
+// translations rigid (a plastic hinge). Includes the adapter's planning and settling.
+plascap::PlasticJointSettings plastic_settings(bench::Springs springs, bool six) {
     plascap::PlasticJointSettings settings;
     for (plascap::Dof dof : plascap::kAllDofs) {
         const bool plastic = six || plascap::is_rotation(dof);
         settings.modes[plascap::index(dof)] = plastic ? plascap::DofMode::Plastic : plascap::DofMode::Rigid;
-        settings.laws[plascap::index(dof)] = plascap::DofLaw{1e5, 1e5, std::nullopt};
-        if (elastic) settings.laws[plascap::index(dof)].stiffness = plascap::is_rotation(dof) ? 100.0 : 5000.0;
+        settings.laws[plascap::index(dof)] = plascap::DofLaw{1e5, 1e5, bench::spring_stiffness(springs, dof)};
     }
     return settings;
 }
 
 void PlasticJoints(benchmark::State& state) {
-    step_with_joints(state, static_cast<int>(state.range(2)), plastic_settings(state.range(0) == 1, state.range(1) == 1));
+    step_with_joints(state, static_cast<int>(state.range(2)), plastic_settings(static_cast<bench::Springs>(state.range(0)), state.range(1) == 1));
 }
 BENCHMARK(PlasticJoints)
     ->ArgNames({"elastic", "six", "joints"})
-    ->ArgsProduct({{0, 1}, {0, 1}, {100, 1000, 10000}})
+    ->ArgsProduct({{0, 1, 2}, {0, 1}, {100, 1000, 10000}})
     ->Unit(benchmark::kMicrosecond);
 
 bool any_awake(const HangingBoxes& scene) {
@@ -131,7 +131,7 @@ void Sleeping(benchmark::State& state) {
     fix_all(rigid);
     HangingBoxes scene(n);
     auto joints = std::make_unique<plascap::OdePlasticJoints>(scene.world);
-    const plascap::PlasticJointSettings settings = plastic_settings(false, state.range(0) == 1);
+    const plascap::PlasticJointSettings settings = plastic_settings(bench::Springs::None, state.range(0) == 1);
     for (int i = 0; i < n; ++i) joints->add(nullptr, scene.boxes[i], scene.anchor(i), settings);
     for (HangingBoxes* boxes : {&rigid, &scene}) {
         dWorldSetAutoDisableFlag(boxes->world, 1);
