@@ -43,6 +43,27 @@ double drop_after(int steps, double F) {
     return 0.5 * (kG - F / kMass) * kDt * kDt * steps * (steps + 1);
 }
 
+// The axial dof an elastic spring k with capacities far above the load, every other dof rigid.
+PlasticJointSettings axial_spring(double k) {
+    PlasticJointSettings s = axial(1e6);
+    s.laws[index(Dof::N)].stiffness = k;
+    return s;
+}
+
+// The block's drop u after each step under its weight suddenly applied, on an explicit spring
+// (force k·u from the step's start) and semi-implicit Euler, as both engines integrate: w ← w + h·(g − k·u/m),
+// u ← u + h·w (the elastic–perfectly-plastic oscillator of docs/references.md, W ≤ F/2, peak 2W/k).
+std::vector<double> spring_drops(double k, const std::vector<double>& steps) {
+    std::vector<double> drops;
+    double u = 0.0, w = 0.0;
+    for (double h : steps) {
+        w += h * (kG - k * u / kMass);
+        u += h * w;
+        drops.push_back(u);
+    }
+    return drops;
+}
+
 // The driver without an engine: a row at its bound with motion far beyond solver noise is flow
 // (Yielded), a row below it is not (None); past the limit it breaks once (Broke, the callback once),
 // and then reports None.
@@ -188,6 +209,38 @@ TEST(BulletLifecycle, ASleepingJointIsSkippedAndFlowsWhenWoken) {
     EXPECT_NEAR(y - block.body().getCenterOfMassPosition().y(), expected, 1e-6 * expected);
     EXPECT_NEAR(joint.law().plastic_displacement(), expected, 1e-6 * expected);
 }
+
+// A spring's row is bounded by its force on both sides, so BulletPlasticSolver applies it once, in
+// its set-up, and leaves it out of the iterations, which then solve the other rows in their order
+// (issue 16). In one world: a block on an axial spring, whose rows come first, drops as the
+// oscillator's recurrence says and the joint reports the spring's force as applied; a second block,
+// on a rigid-plastic axial joint after it, flows at its capacity as the rigid-plastic oscillator says.
+TEST(BulletLifecycle, ASpringIsAppliedOnceAStepAsTheOscillatorSaysAndTheRowsAfterItStillHold) {
+    const double k = 1200.0, F = 18.0;  // ω·dt = √(k/m)·dt = 0.2 ≤ 0.25: an elastic row (eq. 3.2)
+    BulletWorld world(btVector3(0, -kG, 0), 10);
+    BulletBox sprung(btVector3(0.1, 0.1, 0.1), kMass, at(-0.5));
+    BulletBox flowing(btVector3(0.1, 0.1, 0.1), kMass, btTransform(btQuaternion::getIdentity(), btVector3(3, -0.5, 0)));
+    world.world().addRigidBody(&sprung.body());
+    world.world().addRigidBody(&flowing.body());
+    {
+        BulletPlasticJoint spring(nullptr, sprung.body(), btTransform::getIdentity(), axial_spring(k));
+        BulletPlasticJoint capacity(nullptr, flowing.body(), btTransform(btQuaternion::getIdentity(), btVector3(3, 0, 0)), axial(F));
+        spring.attach(world.world(), kDt);
+        capacity.attach(world.world(), kDt);
+        const int steps = 40;
+        const std::vector<double> drops = spring_drops(k, std::vector<double>(steps, kDt));
+        for (int i = 0; i < steps; ++i) {
+            const double before = -0.5 - sprung.body().getCenterOfMassPosition().y();
+            world.step(kDt);
+            ASSERT_NEAR(-0.5 - sprung.body().getCenterOfMassPosition().y(), drops[static_cast<std::size_t>(i)], 1e-9) << "step " << i;
+            ASSERT_NEAR(spring.forces()[index(Dof::N)], k * before, 1e-9) << "step " << i;  // tension k·u of the step's start
+            ASSERT_NEAR(-0.5 - flowing.body().getCenterOfMassPosition().y(), drop_after(i + 1, F), 1e-9) << "step " << i;
+        }
+        EXPECT_NEAR(capacity.law().plastic_displacement(), drop_after(steps, F), 1e-9);
+    }
+    world.world().removeRigidBody(&flowing.body());
+    world.world().removeRigidBody(&sprung.body());
+}
 #endif
 
 #ifdef PLASCAP_HAVE_ODE
@@ -285,27 +338,6 @@ TEST(OdeLifecycle, AGroupThatLoadsItsJointsAheadFlowsAsTheOscillatorSays) {
     for (int i = 0; i < steps; ++i) joints.step(kDt, OdePlasticJoints::Stepper::Exact);
     for (std::size_t i = 0; i < count; ++i)
         ASSERT_NEAR(dBodyGetPosition(blocks[i])[1], -0.5 - drop_after(steps, 18.0), 1e-9) << "block " << i;
-}
-
-// The axial dof an elastic spring k with capacities far above the load, every other dof rigid.
-PlasticJointSettings axial_spring(double k) {
-    PlasticJointSettings s = axial(1e6);
-    s.laws[index(Dof::N)].stiffness = k;
-    return s;
-}
-
-// The block's drop u after each step under its weight suddenly applied, on an explicit spring
-// (force k·u from the step's start) and semi-implicit Euler, as ODE integrates: w ← w + h·(g − k·u/m),
-// u ← u + h·w (the elastic–perfectly-plastic oscillator of docs/references.md, W ≤ F/2, peak 2W/k).
-std::vector<double> spring_drops(double k, const std::vector<double>& steps) {
-    std::vector<double> drops;
-    double u = 0.0, w = 0.0;
-    for (double h : steps) {
-        w += h * (kG - k * u / kMass);
-        u += h * w;
-        drops.push_back(u);
-    }
-    return drops;
 }
 
 // ODE's rows carry what must be solved; a spring's force is known before the step, so ODE's joint

@@ -39,6 +39,25 @@ btScalar resolve_push(btSolverBody& a, btSolverBody& b, btSolverConstraint& row)
     return std::abs(delta);
 }
 
+// Applies `impulse` along the row to both bodies and books it as the row's, as
+// resolveSingleConstraintRowGeneric applies an impulse.
+void apply_row_impulse(btSolverConstraint& row, btSolverBody& a, btSolverBody& b, btScalar impulse) {
+    row.m_appliedImpulse = impulse;
+    a.internalApplyImpulse(row.m_contactNormal1 * a.internalGetInvMass(), row.m_angularComponentA, impulse);
+    b.internalApplyImpulse(row.m_contactNormal2 * b.internalGetInvMass(), row.m_angularComponentB, impulse);
+}
+
+// A Push row's bounds are both its spring force over the step (the law's explicit spring,
+// docs/adapters.md "The law"). Applied once, here, it is the whole of the row, so the row takes
+// no part in the iterations (Bullet solves a row only while the iteration is below its
+// m_overrideNumSolverIterations): each of them would find it on its bound and change nothing, and
+// on joints with six springs they were most of the solve. The impulse stays the row's
+// m_appliedImpulse, so the joint's feedback reports it as before.
+void apply_spring_force(btSolverConstraint& row, btSolverBody& a, btSolverBody& b) {
+    row.m_overrideNumSolverIterations = 0;
+    apply_row_impulse(row, a, b, row.m_lowerLimit);
+}
+
 }  // namespace
 
 template <class Act>
@@ -71,12 +90,16 @@ void BulletPlasticSolver::convertJoints(btTypedConstraint** constraints, int cou
         at += rows;
     }
     largest_correction_ = 0.0;
-    // A Push row's bounds are its force: its first iteration applies it, and it needs no more.
+    spring_rows_.clear();
     for_each_row([&](BulletPlasticConstraint& c, std::size_t k, btSolverConstraint& row) {
         // Bullet's jacDiagABInv is the row's effective mass 1/(J·M⁻¹·Jᵀ) (0 when J·M⁻¹·Jᵀ is below
         // its epsilon: not known then).
         c.note_row_mass(k, row.m_jacDiagABInv > 0.0 ? row.m_jacDiagABInv : NAN);
-        if (!c.holds_position(k)) return;
+        if (!c.holds_position(k)) {
+            apply_spring_force(row, m_tmpSolverBodyPool[row.m_solverBodyIdA], m_tmpSolverBodyPool[row.m_solverBodyIdB]);
+            spring_rows_.push_back(static_cast<int>(&row - &m_tmpSolverNonContactConstraintPool[0]));
+            return;
+        }
         if (split) {
             const double rate = c.correction_rate(k);
             row.m_rhsPenetration = rate * row.m_jacDiagABInv;
@@ -85,12 +108,35 @@ void BulletPlasticSolver::convertJoints(btTypedConstraint** constraints, int cou
         // The warm start, as resolveSingleConstraintRowGeneric applies an impulse.
         const btScalar impulse = std::clamp<btScalar>(c.carried_force(k) * info.m_timeStep, row.m_lowerLimit, row.m_upperLimit);
         if (impulse == 0.0) return;
-        row.m_appliedImpulse = impulse;
-        btSolverBody& a = m_tmpSolverBodyPool[row.m_solverBodyIdA];
-        btSolverBody& b = m_tmpSolverBodyPool[row.m_solverBodyIdB];
-        a.internalApplyImpulse(row.m_contactNormal1 * a.internalGetInvMass(), row.m_angularComponentA, impulse);
-        b.internalApplyImpulse(row.m_contactNormal2 * b.internalGetInvMass(), row.m_angularComponentB, impulse);
+        apply_row_impulse(row, m_tmpSolverBodyPool[row.m_solverBodyIdA], m_tmpSolverBodyPool[row.m_solverBodyIdB], impulse);
     });
+}
+
+btScalar BulletPlasticSolver::solveGroupCacheFriendlySetup(btCollisionObject** bodies, int body_count,
+                                                            btPersistentManifold** manifolds, int manifold_count,
+                                                            btTypedConstraint** constraints, int constraint_count,
+                                                            const btContactSolverInfo& info, btIDebugDraw* drawer) {
+    const btScalar result = btSequentialImpulseConstraintSolver::solveGroupCacheFriendlySetup(
+        bodies, body_count, manifolds, manifold_count, constraints, constraint_count, info, drawer);
+    order_springs_last();
+    return result;
+}
+
+void BulletPlasticSolver::order_springs_last() {
+    if (spring_rows_.empty()) return;
+    // The others keep their order (and so the solve its result); spring_rows_ is in pool order.
+    int at = 0;
+    auto spring = spring_rows_.begin();
+    for (int i = 0; i < m_tmpSolverNonContactConstraintPool.size(); ++i) {
+        if (spring != spring_rows_.end() && *spring == i) {
+            ++spring;
+            continue;
+        }
+        m_orderNonContactConstraintPool[at++] = i;
+    }
+    // The loop still runs over as many entries as the pool has rows: each one left points at the
+    // first spring row, which every iteration skips from the cache instead of loading a row of its own.
+    while (at < m_tmpSolverNonContactConstraintPool.size()) m_orderNonContactConstraintPool[at++] = spring_rows_.front();
 }
 
 void BulletPlasticSolver::solveGroupCacheFriendlySplitImpulseIterations(
