@@ -50,8 +50,8 @@ void apply_row_impulse(btSolverConstraint& row, btSolverBody& a, btSolverBody& b
 // A Push row's bounds are both its spring force over the step (the law's explicit spring,
 // docs/adapters.md "The law"). Applied once, here, it is the whole of the row, so the row takes
 // no part in the iterations (Bullet solves a row only while the iteration is below its
-// m_overrideNumSolverIterations): each of them would find it on its bound and change nothing, and
-// on joints with six springs they were most of the solve. The impulse stays the row's
+// m_overrideNumSolverIterations): each of them would find it on its bound and change nothing (on
+// 10,000 joints of six springs, 11 % of the step's instructions). The impulse stays the row's
 // m_appliedImpulse, so the joint's feedback reports it as before.
 void apply_spring_force(btSolverConstraint& row, btSolverBody& a, btSolverBody& b) {
     row.m_overrideNumSolverIterations = 0;
