@@ -25,7 +25,8 @@ void validate_dof_law(const DofLaw& law, const char* where) {
 }
 
 ElasticPlasticLaw::ElasticPlasticLaw(const DofLaw& law, bool two_sided_bounds)
-    : law_(law), regime_(law.stiffness ? Regime::ElasticPlastic : Regime::RigidPlastic),
+    : capacity_positive_(law.capacity_positive), capacity_negative_(law.capacity_negative),
+      stiffness_(law.stiffness.value_or(0.0)), regime_(law.stiffness ? Regime::ElasticPlastic : Regime::RigidPlastic),
       two_sided_bounds_(two_sided_bounds) {}
 
 void ElasticPlasticLaw::start(double position) {
@@ -37,7 +38,7 @@ RowCommand ElasticPlasticLaw::plan(double position, double dt, double effective_
     planned_position_ = position;
     planned_stopping_stiffness_ = effective_mass / (dt * dt);
     planned_ = true;
-    regime_ = regime_for(law_.stiffness.has_value(), spring_omega_dt(law_.stiffness, effective_mass, dt));  // eq. 3.2
+    regime_ = regime_for(has_stiffness(), has_stiffness() ? spring_omega_dt(stiffness_, effective_mass, dt) : 0.0);  // eq. 3.2
     if (regime_ != Regime::ElasticPlastic) {
         // Paper §2: target velocity 0, force bounded by the capacity; plus the correction.
         RowCommand hold;
@@ -50,8 +51,8 @@ RowCommand ElasticPlasticLaw::plan(double position, double dt, double effective_
         return hold;
     }
     // Explicit spring force from the start-of-step position, capped at the capacities.
-    const double spring = -*law_.stiffness * (position - plastic_offset_);
-    const double force = coupled_ ? spring : std::clamp(spring, -law_.capacity_positive, law_.capacity_negative);
+    const double spring = -stiffness_ * (position - plastic_offset_);
+    const double force = coupled_ ? spring : std::clamp(spring, -capacity_positive_, capacity_negative_);
     RowCommand push;
     push.kind = RowCommand::Kind::Push;
     push.force = force;
@@ -104,16 +105,16 @@ void ElasticPlasticLaw::clear_pending() {
 
 void ElasticPlasticLaw::settle_elastic_plastic(double position) {
     // Return mapping: move x_p until the elastic force is back on the capacity it passed.
-    const double k = *law_.stiffness;
+    const double k = stiffness_;
     const double trial = -k * (position - plastic_offset_);
     double moved_to = plastic_offset_;
     double capacity = 0.0;
-    if (trial < -law_.capacity_positive) {
-        moved_to = position - law_.capacity_positive / k;
-        capacity = law_.capacity_positive;
-    } else if (trial > law_.capacity_negative) {
-        moved_to = position + law_.capacity_negative / k;
-        capacity = law_.capacity_negative;
+    if (trial < -capacity_positive_) {
+        moved_to = position - capacity_positive_ / k;
+        capacity = capacity_positive_;
+    } else if (trial > capacity_negative_) {
+        moved_to = position + capacity_negative_ / k;
+        capacity = capacity_negative_;
     }
     if (moved_to == plastic_offset_) return;  // inside the capacities: nothing to book
     const double step = std::abs(moved_to - plastic_offset_);
@@ -131,16 +132,16 @@ void ElasticPlasticLaw::flow(double step, double load) {
 }
 
 double ElasticPlasticLaw::omega_dt() const {
-    if (!law_.stiffness || !planned_) return 0.0;
+    if (!has_stiffness() || !planned_) return 0.0;
     // √(k/m)·dt = √(k/(m/dt²)) (regime.hpp); spring_omega_dt's ∞ for a mass not > 0.
     if (!(planned_stopping_stiffness_ > 0.0)) return INFINITY;
-    return std::sqrt(*law_.stiffness / planned_stopping_stiffness_);
+    return std::sqrt(stiffness_ / planned_stopping_stiffness_);
 }
 
 double ElasticPlasticLaw::elastic_energy(double position) const {
     if (regime_ != Regime::ElasticPlastic) return 0.0;
     const double stretch = position - plastic_offset_;
-    return 0.5 * *law_.stiffness * stretch * stretch;
+    return 0.5 * stiffness_ * stretch * stretch;
 }
 
 }  // namespace plascap

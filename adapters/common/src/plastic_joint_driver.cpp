@@ -20,9 +20,8 @@ JointEvent PlasticJointDriver::settle(const PerDof<double>& forces_on_b, const P
                                       const PerDof<double>& corrected_motion) {
     time_ += dt;
     if (law_.broken()) return JointEvent::None;
-    forces_ = forces_on_b;
     const double before = law_.plastic_displacement() + law_.plastic_rotation();
-    law_.settle(positions, forces_, time_, corrected_motion);
+    law_.settle(positions, forces_on_b, time_, corrected_motion);
     if (break_if_due() == JointEvent::Broke) return JointEvent::Broke;
     if (law_.plastic_displacement() + law_.plastic_rotation() > before) return JointEvent::Yielded;
     return law_.at_capacity() ? JointEvent::AtCapacity : JointEvent::None;
@@ -36,7 +35,7 @@ JointEvent PlasticJointDriver::idle(double dt) {
 JointEvent PlasticJointDriver::break_if_due() {
     if (sever_) law_.sever(time_);
     if (!law_.broken()) return JointEvent::None;
-    if (on_break_) on_break_({time_, law_.plastic_displacement(), law_.plastic_rotation(), law_.dissipated()});
+    if (on_break_) (*on_break_)({time_, law_.plastic_displacement(), law_.plastic_rotation(), law_.dissipated()});
     return JointEvent::Broke;
 }
 

@@ -14,14 +14,14 @@ struct PlasticJointLaw::Coupling {
 };
 
 PlasticJointLaw::PlasticJointLaw(const PlasticJointSettings& settings, RowCapabilities rows)
-    : settings_(std::make_shared<const PlasticJointSettings>(settings)), modes_(settings.modes),
+    : settings_(std::make_shared<const PlasticJointSettings>(settings)), modes_(settings.modes), rows_(rows),
       max_plastic_displacement_(settings.max_plastic_displacement),
-      max_plastic_rotation_(settings.max_plastic_rotation), rows_(rows) {
+      max_plastic_rotation_(settings.max_plastic_rotation) {
     validate_joint_settings(settings, "plastic joint");
     for (Dof dof : kAllDofs) {
         if (mode(dof) != DofMode::Plastic) continue;
-        laws_[index(dof)].emplace(settings.laws[index(dof)], rows.two_sided_bounds);
-        if (settings.yield_condition) laws_[index(dof)]->couple();
+        laws_[index(dof)] = ElasticPlasticLaw(settings.laws[index(dof)], rows.two_sided_bounds);
+        if (settings.yield_condition) laws_[index(dof)].couple();
     }
     if (const YieldCondition* condition = settings_->yield_condition.get()) {
         // new, not make_unique: an aggregate with a reference member (GCC 12 will not build it from parentheses).
@@ -35,12 +35,12 @@ PlasticJointLaw& PlasticJointLaw::operator=(PlasticJointLaw&&) noexcept = defaul
 
 PerDof<ElasticPlasticLaw*> PlasticJointLaw::plastic_laws() {
     PerDof<ElasticPlasticLaw*> laws{};
-    for (std::size_t i = 0; i < kDofCount; ++i) laws[i] = plastic(i) ? &*laws_[i] : nullptr;
+    for (std::size_t i = 0; i < kDofCount; ++i) laws[i] = plastic(i) ? &laws_[i] : nullptr;
     return laws;
 }
 
 const ElasticPlasticLaw* PlasticJointLaw::law(Dof dof) const {
-    return plastic(index(dof)) ? &*laws_[index(dof)] : nullptr;
+    return plastic(index(dof)) ? &laws_[index(dof)] : nullptr;
 }
 
 PerDof<double> PlasticJointLaw::continuous(const PerDof<double>& measured) const {
@@ -53,16 +53,17 @@ PerDof<double> PlasticJointLaw::continuous(const PerDof<double>& measured) const
     // the twist wraps.
     const double pi = std::acos(-1.0), turn = 2.0 * pi;
     const std::size_t x = index(Dof::Mx), y = index(Dof::My), z = index(Dof::Mz);
+    const auto last = [&](std::size_t i) { return last_continuous_[angle_index(kAllDofs[i])]; };  // dof i's last continuous angle
     const auto unwrap = [&](double angle, std::size_t i) {
-        const double step = angle - last_continuous_[i];
+        const double step = angle - last(i);
         if (std::abs(step) < pi) return angle;  // within half a turn: no whole turn to take off
-        return last_continuous_[i] + (step - turn * std::round(step / turn));
+        return last(i) + (step - turn * std::round(step / turn));
     };
     PerDof<double> same = measured, other = measured;
     same[x] = unwrap(measured[x], x), same[y] = unwrap(measured[y], y), same[z] = unwrap(measured[z], z);
     if (!euler_rows()) return same;
     const auto distance = [&](const PerDof<double>& p) {
-        return std::abs(p[x] - last_continuous_[x]) + std::abs(p[y] - last_continuous_[y]) + std::abs(p[z] - last_continuous_[z]);
+        return std::abs(p[x] - last(x)) + std::abs(p[y] - last(y)) + std::abs(p[z] - last(z));
     };
     // The other branch's θx and θz lie π − |Δx| and π − |Δz| from the last angles where this
     // branch's lie |Δx| and |Δz|: its distance is at least 2π less this one's, so below π this
@@ -74,14 +75,14 @@ PerDof<double> PlasticJointLaw::continuous(const PerDof<double>& measured) const
 }
 
 void PlasticJointLaw::track(const PerDof<double>& measured, const PerDof<double>& continuous_positions) {
-    last_measured_ = measured;
-    last_continuous_ = continuous_positions;
+    last_measured_ = rotations_of(measured);
+    last_continuous_ = rotations_of(continuous_positions);
 }
 
 void PlasticJointLaw::start(const PerDof<double>& measured) {
     track(measured, measured);
     for (std::size_t i = 0; i < kDofCount; ++i) {
-        if (plastic(i)) laws_[i]->start(measured[i]);
+        if (plastic(i)) laws_[i].start(measured[i]);
     }
 }
 
@@ -90,24 +91,37 @@ namespace {
 // On the second Euler branch (continuous θy past ±90°, where cos θy < 0) the My dof runs against
 // the engines' (θy = π − θy,engine), so its row's rate, force and command change sign; Mx and Mz
 // do not (θx = θx,engine + π). Returns −1 there, else 1.
-double twist_sign(const PerDof<double>& continuous_positions) {
-    return std::cos(continuous_positions[index(Dof::My)]) < 0.0 ? -1.0 : 1.0;
-}
+double twist_sign(double continuous_my) { return std::cos(continuous_my) < 0.0 ? -1.0 : 1.0; }
+double twist_sign(const PerDof<double>& continuous_positions) { return twist_sign(continuous_positions[index(Dof::My)]); }
 
 }  // namespace
+
+PerDof<double> PlasticJointLaw::last_loads() const {
+    PerDof<double> loads;
+    for (std::size_t i = 0; i < kDofCount; ++i) loads[i] = -last_forces_[i];
+    // On the second Euler branch the My dof runs against the engines' (twist_sign).
+    if (euler_rows()) loads[index(Dof::My)] *= twist_sign(last_continuous_[angle_index(Dof::My)]);
+    return loads;
+}
 
 PerDof<std::optional<RowCommand>> PlasticJointLaw::plan(const PerDof<double>& measured, double dt,
                                                         const PerDof<double>& effective_masses) {
     // The adapters measure at the end of a step what the next step starts from: unwrapped then.
-    const PerDof<double> positions = measured == last_measured_ ? last_continuous_ : continuous(measured);
+    PerDof<double> positions = measured;
+    if (rotations_of(measured) == last_measured_) {  // as last seen: unwrapped then
+        for (Dof dof : {Dof::Mx, Dof::My, Dof::Mz}) positions[index(dof)] = last_continuous_[angle_index(dof)];
+    } else {
+        positions = continuous(measured);
+    }
+    const PerDof<double> loads = coupling_ ? last_loads() : PerDof<double>{};  // of the last settle, before track()
     track(measured, positions);
     PerDof<std::optional<RowCommand>> commands;
     PerDof<std::optional<double>> bounds;
     if (coupling_)
-        bounds = detail::coupled_hold_bounds(coupling_->condition, coupling_->axes, coupling_->hint, last_loads_,
+        bounds = detail::coupled_hold_bounds(coupling_->condition, coupling_->axes, coupling_->hint, loads,
                                              plastic_laws());
     for (std::size_t i = 0; i < kDofCount; ++i) {
-        if (plastic(i)) commands[i] = laws_[i]->plan(positions[i], dt, effective_masses[i], bounds[i]);
+        if (plastic(i)) commands[i] = laws_[i].plan(positions[i], dt, effective_masses[i], bounds[i]);
     }
     if (std::optional<RowCommand>& my = commands[index(Dof::My)]; my && euler_rows() && twist_sign(positions) < 0.0) {
         my->velocity = -my->velocity;
@@ -120,6 +134,7 @@ bool PlasticJointLaw::settle(const PerDof<double>& measured, const PerDof<double
                              const PerDof<double>& corrected_motion) {
     if (broken()) return false;
     const PerDof<double> positions = continuous(measured);
+    last_forces_ = row_forces;
     PerDof<double> forces = row_forces;
     if (euler_rows()) forces[index(Dof::My)] *= twist_sign(positions);
     // The rows' work on the step. Rotation rows act about the Euler row axes e_i (joint_frame.hpp),
@@ -132,18 +147,17 @@ bool PlasticJointLaw::settle(const PerDof<double>& measured, const PerDof<double
     // continuous angles are on.
     // Swing–twist rows are the angles' exact gradients (swing_twist.hpp): their factor stays 1.
     if (euler_rows()) {
-        const double cos_twist = std::cos(0.5 * (last_measured_[index(Dof::My)] + measured[index(Dof::My)]));
+        const double cos_twist = std::cos(0.5 * (last_measured_[angle_index(Dof::My)] + measured[index(Dof::My)]));
         for (Dof dof : {Dof::Mx, Dof::Mz}) {
-            if (plastic(index(dof))) laws_[index(dof)]->set_work_factor(cos_twist);
+            if (plastic(index(dof))) laws_[index(dof)].set_work_factor(cos_twist);
         }
     }
     track(measured, positions);
     for (std::size_t i = 0; i < kDofCount; ++i) {
-        if (plastic(i)) laws_[i]->settle(positions[i], forces[i], corrected_motion[i]);
-        last_loads_[i] = -forces[i];
+        if (plastic(i)) laws_[i].settle(positions[i], forces[i], corrected_motion[i]);
     }
     if (coupling_)
-        detail::coupled_return_mapping(coupling_->condition, coupling_->axes, coupling_->hint, positions, last_loads_,
+        detail::coupled_return_mapping(coupling_->condition, coupling_->axes, coupling_->hint, positions, last_loads(),
                                        plastic_laws());
     summarise();
     if (plastic_displacement() > max_plastic_displacement_ || plastic_rotation() > max_plastic_rotation_) {
@@ -158,7 +172,7 @@ void PlasticJointLaw::summarise() {
     summary_.at_capacity = summary_.near_capacity = false;
     for (std::size_t i = 0; i < kDofCount; ++i) {
         if (!plastic(i)) continue;
-        const ElasticPlasticLaw& law = *laws_[i];
+        const ElasticPlasticLaw& law = laws_[i];
         moved = moved || law.moved();
         summary_.at_capacity = summary_.at_capacity || law.at_capacity();
         summary_.near_capacity = summary_.near_capacity || law.near_capacity();
@@ -169,7 +183,7 @@ void PlasticJointLaw::summarise() {
     summary_.plastic_displacement = summary_.plastic_rotation = 0.0;
     for (Dof dof : kAllDofs) {
         if (!plastic(index(dof))) continue;
-        (is_rotation(dof) ? summary_.plastic_rotation : summary_.plastic_displacement) += laws_[index(dof)]->accumulated_plastic();
+        (is_rotation(dof) ? summary_.plastic_rotation : summary_.plastic_displacement) += laws_[index(dof)].accumulated_plastic();
     }
 }
 
@@ -177,7 +191,7 @@ template <class OfLaw>
 double PlasticJointLaw::sum_over_plastic(OfLaw of_law) const {
     double sum = 0.0;
     for (std::size_t i = 0; i < kDofCount; ++i) {
-        if (plastic(i)) sum += of_law(*laws_[i], i);
+        if (plastic(i)) sum += of_law(laws_[i], i);
     }
     return sum;
 }
@@ -191,19 +205,20 @@ double PlasticJointLaw::dissipated_by_corrections() const {
 }
 
 double PlasticJointLaw::utilisation() const {
+    const PerDof<double> loads = last_loads();
     if (coupling_) {
         // Well inside, the inscribed cross-polytope's share bounds U from above and costs no solve
         // (a report of a thousand joints would otherwise solve for each one's U).
-        const double share = detail::cross_polytope_share(coupling_->axes, last_loads_);
+        const double share = detail::cross_polytope_share(coupling_->axes, loads);
         if (share <= detail::kFarInside) return share;
         YieldHint hint = coupling_->hint;  // a copy: a report must not move the law's own starting point
-        return coupling_->condition.evaluate(last_loads_, hint).utilisation;
+        return coupling_->condition.evaluate(loads, hint).utilisation;
     }
     double u = 0.0;
     for (std::size_t i = 0; i < kDofCount; ++i) {
         if (!plastic(i)) continue;
-        const DofLaw& law = laws_[i]->law();
-        const double load = last_loads_[i];
+        const DofLaw law = laws_[i].law();
+        const double load = loads[i];
         u = std::max(u, std::abs(load) / (load >= 0.0 ? law.capacity_positive : law.capacity_negative));
     }
     return u;

@@ -11,6 +11,7 @@
 // ODE's usual factor kHoldCorrection). The work the dof absorbs in plastic flow is the dissipated
 // energy.
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -40,6 +41,9 @@ public:
     // `two_sided_bounds`: the engine's Hold row carries both capacities (row_capabilities.hpp), so a
     // load reversal meets the capacity of its own side from its first step.
     explicit ElasticPlasticLaw(const DofLaw& law, bool two_sided_bounds = false);
+    // No law yet: a slot a joint keeps for a dof that is not plastic (plastic_joint_law.hpp). Only
+    // assigning a law to it is meaningful.
+    ElasticPlasticLaw() : books_(nullptr) {}
 
     // When the joint takes hold: the dof's position then is its unloaded, unyielded state.
     void start(double position);
@@ -68,7 +72,9 @@ public:
     // accumulated plastic motion grows by |step| and the dissipated energy by load·step.
     void flow(double step, double load);
 
-    const DofLaw& law() const { return law_; }
+    DofLaw law() const {
+        return {capacity_positive_, capacity_negative_, has_stiffness() ? std::optional<double>(stiffness_) : std::nullopt};
+    }
     Regime regime() const { return regime_; }
     // ω·dt of the last plan (eq. 3.2); 0 without a stiffness or before the first plan.
     double omega_dt() const;
@@ -90,15 +96,15 @@ private:
     // A row's bound is symmetric, so take the capacity on the side the dof was last loaded; before
     // any load, the smaller one.
     double hold_bound() const {
-        if (last_force_sign_ < 0) return law_.capacity_positive;
-        if (last_force_sign_ > 0) return law_.capacity_negative;
-        return law_.capacity_positive < law_.capacity_negative ? law_.capacity_positive : law_.capacity_negative;
+        if (last_force_sign_ < 0) return capacity_positive_;
+        if (last_force_sign_ > 0) return capacity_negative_;
+        return capacity_positive_ < capacity_negative_ ? capacity_positive_ : capacity_negative_;
     }
     // The bound the last planned Hold row put on a force of this sign on b: both capacities, each on
     // its side, or one bound for both sides.
     double side_bound(double force) const {
         if (!held_on_both_capacities_) return last_bound_;
-        return force >= 0.0 ? law_.capacity_negative : law_.capacity_positive;
+        return force >= 0.0 ? capacity_negative_ : capacity_positive_;
     }
     void settle_rigid_plastic(double position, double applied_force, double corrected_motion);
     void settle_elastic_plastic(double position);
@@ -121,6 +127,7 @@ private:
     class BooksApart {
     public:
         BooksApart() : books_(std::make_unique<Books>()) {}
+        explicit BooksApart(std::nullptr_t) {}  // no books: a slot without a law
         BooksApart(const BooksApart& other) : books_(copy(other)) {}
         BooksApart& operator=(const BooksApart& other) {
             books_ = copy(other);
@@ -138,9 +145,14 @@ private:
         std::unique_ptr<Books> books_;
     };
 
-    // Members ordered so the small ones share one word.
-    DofLaw law_;
-    Regime regime_;
+    // A stiffness is positive (validate_dof_law): 0 stands for none.
+    bool has_stiffness() const { return stiffness_ > 0.0; }
+
+    // Members ordered so the small ones share one word. The DofLaw is kept as three doubles, its
+    // stiffness without a std::optional's flag: 8 B a dof less for a step to touch (issue 16).
+    double capacity_positive_ = 0.0, capacity_negative_ = 0.0;  // DofLaw's [N | N·m]
+    double stiffness_ = 0.0;                                     // DofLaw's, 0: none [N/m | N·m/rad]
+    Regime regime_ = Regime::RigidPlastic;
     bool two_sided_bounds_ = false;
     bool coupled_ = false;
     bool planned_ = false;

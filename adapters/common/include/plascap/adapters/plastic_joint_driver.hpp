@@ -6,6 +6,7 @@
 // lives here, so Bullet and ODE cannot drift apart.
 #include <cmath>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <utility>
 
@@ -81,12 +82,14 @@ public:
     void sever() { sever_ = true; }
 
     // Called once, from settle(), when the joint breaks.
-    void on_break(BreakCallback callback) { on_break_ = std::move(callback); }
+    void on_break(BreakCallback callback) {
+        on_break_ = callback ? std::make_unique<BreakCallback>(std::move(callback)) : nullptr;
+    }
 
     const PlasticJointLaw& law() const { return law_; }
     bool broken() const { return law_.broken(); }
     // The generalised forces the rows applied to b during the last step [N, N·m].
-    const PerDof<double>& forces() const { return forces_; }
+    const PerDof<double>& forces() const { return law_.forces(); }
     double time() const { return time_; }
 
 private:
@@ -102,16 +105,18 @@ private:
     // reports Broke, else None.
     JointEvent break_if_due();
 
+    // The flags share one word: a step of 10,000 joints waits on memory for every byte of theirs
+    // (issue 16, docs/adapters.md ODE "Cost").
     PlasticJointLaw law_;
     bool springs_ = false;  // a plastic dof has a stiffness
     bool masses_known_ = false;
-    PerDof<double> masses_{};  // the rows' effective masses as last computed
     bool engaged_ = false;
-    PerDof<double> engaged_positions_{};
-    PerDof<double> forces_{};
-    double time_ = 0.0;
-    BreakCallback on_break_;
     bool sever_ = false;
+    PerDof<double> masses_{};  // the rows' effective masses as last computed
+    PerDof<double> engaged_positions_{};
+    double time_ = 0.0;
+    // Apart from the joint's own bytes: 8 B where a std::function is 32.
+    std::unique_ptr<BreakCallback> on_break_;
 };
 
 }  // namespace plascap

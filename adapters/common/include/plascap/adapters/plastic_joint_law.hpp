@@ -2,6 +2,8 @@
 // The joint-level law: six dof laws, the breaking rule, and the totals reports need. Engine
 // adapters call plan() before each step and settle() after it; nothing here knows an engine.
 // With a yield condition in the settings, the plastic dofs yield together on it (coupled_yield.hpp).
+#include <array>
+#include <cmath>
 #include <memory>
 #include <optional>
 
@@ -41,19 +43,19 @@ public:
     // Breaks the joint at `time` whatever its deformation (a member removed, a charge fired); no-op
     // if broken already.
     void sever(double time) {
-        if (!broken()) broken_at_ = time;
+        if (!broken()) broken_at_ = time;  // a time is not NaN
     }
 
     DofMode mode(Dof dof) const { return modes_[index(dof)]; }
     // The law of a plastic dof; nullptr for free and rigid ones.
     const ElasticPlasticLaw* law(Dof dof) const;
 
-    bool broken() const { return broken_at_.has_value(); }
+    bool broken() const { return !std::isnan(broken_at_); }
     // A rigid-plastic row was at its bound in the last step (flowing or not).
     bool at_capacity() const { return summary_.at_capacity; }
     // A rigid-plastic row carried at least half its bound in the last step.
     bool near_capacity() const { return summary_.near_capacity; }
-    std::optional<double> broken_at() const { return broken_at_; }
+    std::optional<double> broken_at() const { return broken() ? std::optional<double>(broken_at_) : std::nullopt; }
     double plastic_displacement() const { return summary_.plastic_displacement; }  // Σ over translations of Σ|Δx_p| [m]
     double plastic_rotation() const { return summary_.plastic_rotation; }          // Σ over rotations [rad]
     double dissipated() const;            // [J]
@@ -66,6 +68,8 @@ public:
     // independent limits, eq. 2.10–2.14); 1 at yield, 0 before the first step. For reports. With a
     // condition and Σ|s_j|/C_j ≤ 1/2 (far inside), that sum, an upper bound of U, without a solve.
     double utilisation() const;
+    // The generalised forces the rows applied to b in the last settled step [N, N·m].
+    const PerDof<double>& forces() const { return last_forces_; }
     const PlasticJointSettings& settings() const { return *settings_; }
 
 private:
@@ -81,6 +85,8 @@ private:
     // The measured positions with the rotations unwrapped against the last ones seen (angles wrap at ±π).
     PerDof<double> continuous(const PerDof<double>& measured) const;
     void track(const PerDof<double>& measured, const PerDof<double>& continuous_positions);
+    // The section loads of the last step (−forces on b, on the continuous angles' branch): utilisation, coupling.
+    PerDof<double> last_loads() const;
 
     bool euler_rows() const { return rows_.rotations == RotationMeasure::EulerXYZ; }
     // Whether dof i has a law (the constructor makes one for each plastic dof, none for the others).
@@ -99,13 +105,24 @@ private:
 
     std::shared_ptr<const PlasticJointSettings> settings_;  // as given, for settings()
     PerDof<DofMode> modes_;
+    RowCapabilities rows_;  // two bytes, beside the six modes in one word
     double max_plastic_displacement_, max_plastic_rotation_;  // settings_'s, read every step
-    RowCapabilities rows_;
     std::unique_ptr<Coupling> coupling_;  // none without a yield condition
-    PerDof<std::optional<ElasticPlasticLaw>> laws_;
-    std::optional<double> broken_at_;
-    PerDof<double> last_loads_{};  // the loads (−forces on b) of the last step: utilisation, coupling
-    PerDof<double> last_measured_{}, last_continuous_{};
+    // Each plastic dof's law; a slot of a rigid or free dof holds no law (and no std::optional's
+    // flag either: 8 B a slot less for a step to touch, issue 16). plastic(i) tells which.
+    PerDof<ElasticPlasticLaw> laws_;
+    double broken_at_ = NAN;  // NaN: not broken (no std::optional's flag: 8 B less a joint, issue 16)
+    // The generalised forces the rows applied to b in the last step, as the engine reported them (the
+    // driver and the adapters read them here: one copy a joint, issue 16).
+    PerDof<double> last_forces_{};
+    // The rotations (Mx, My, Mz) as last measured and as unwrapped: translations need no unwrapping,
+    // so the law keeps only the angles (48 B less for a step to touch, issue 16).
+    using Rotations = std::array<double, 3>;
+    static Rotations rotations_of(const PerDof<double>& positions) {
+        return {positions[index(Dof::Mx)], positions[index(Dof::My)], positions[index(Dof::Mz)]};
+    }
+    static constexpr std::size_t angle_index(Dof rotation) { return index(rotation) - index(Dof::Mx); }  // in Rotations
+    Rotations last_measured_{}, last_continuous_{};
     Summary summary_;
 };
 

@@ -5,7 +5,7 @@
 // joint (ode_plastic_rows.hpp) measure swing and twist and bound each row by both capacities.
 namespace plascap {
 
-enum class RotationMeasure {
+enum class RotationMeasure : unsigned char {  // one byte: every joint law keeps one (issue 16)
     // θ of R = Rz(θz)·Ry(θy)·Rx(θx), rows about the Euler axes: engines switch to the triple's
     // second branch past |θy| = 90°, and a bending row does cos θy of work per unit of its angle.
     EulerXYZ,
