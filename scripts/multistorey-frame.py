@@ -77,7 +77,9 @@ def main():
     p.add_argument("--bays-x", type=int, default=4)
     p.add_argument("--bays-z", type=int, default=3)
     p.add_argument("--duration", type=float, default=3.0)
-    p.add_argument("--iterations", type=int, default=100)
+    # 150: at 100 the ledger's remainder on Bullet is +2.6 % of the energy handled, past the 2 %
+    # goal (docs/structures.md, "Known limits"); 150 brings it within, for 1.5x the wall time.
+    p.add_argument("--iterations", type=int, default=150)
     a = p.parse_args()
     with open(a.output, "w") as f:
         json.dump(build(a.storeys, a.bays_x, a.bays_z, a.duration, a.iterations), f, indent=1)

@@ -65,6 +65,10 @@ def test_large_replays_stay_within_budget_and_play(tmp_path, live_browser):
     # The frame's 1,020 bodies and 1,175 joints leave room for 6 MB / (1,020·14 + 1,175·8 B) = 253 frames.
     page, summary = replay(str(tmp_path), example("large/multistorey-frame.json"), "bullet")
     figures["multistorey-frame (bullet)"] = check_large_page(page, summary, live_browser, 253)
+    # Issue 15's energy goal on the example, at its 150 iterations: the ledger's remainder within 2 % of
+    # the energy handled (docs/structures.md, "Known limits": +1.1 % of 78.8 kJ; +2.6 % at 100).
+    energy = summary["energy"]
+    assert abs(energy["remainder"]) <= 0.02 * energy["handled"], energy
     page, summary = replay(str(tmp_path), post_field(str(tmp_path / "post-field.json")), "ode")
     assert summary["steps"] == 10000
     # 10,000 steps decimated to the byte budget: 6 MB / (1,001·14 + 1,000·8 B) = 272 frames.
