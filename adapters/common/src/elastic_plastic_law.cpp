@@ -38,7 +38,7 @@ RowCommand ElasticPlasticLaw::plan(double position, double dt, double effective_
     planned_position_ = position;
     planned_stopping_stiffness_ = effective_mass / (dt * dt);
     planned_ = true;
-    regime_ = regime_for(has_stiffness(), has_stiffness() ? spring_omega_dt(stiffness_, effective_mass, dt) : 0.0);  // eq. 3.2
+    regime_ = choose_regime(stiffness(), effective_mass, dt);  // eq. 3.2
     if (regime_ != Regime::ElasticPlastic) {
         // Paper §2: target velocity 0, force bounded by the capacity; plus the correction.
         RowCommand hold;

@@ -135,8 +135,6 @@ bool PlasticJointLaw::settle(const PerDof<double>& measured, const PerDof<double
     if (broken()) return false;
     const PerDof<double> positions = continuous(measured);
     last_forces_ = row_forces;
-    PerDof<double> forces = row_forces;
-    if (euler_rows()) forces[index(Dof::My)] *= twist_sign(positions);
     // The rows' work on the step. Rotation rows act about the Euler row axes e_i (joint_frame.hpp),
     // the dofs are the Euler angles θ of R = Rz·Ry·Rx, and ω = Σ g_i·θ̇_i with g_x = b's x, g_y = e_y,
     // g_z = a's z. A row's moment λ_i·e_i does λ_i·(e_i·g_i)·Δθ_i of work (e_j·g_i = 0 for j ≠ i):
@@ -153,11 +151,12 @@ bool PlasticJointLaw::settle(const PerDof<double>& measured, const PerDof<double
         }
     }
     track(measured, positions);
+    const PerDof<double> loads = last_loads();  // −forces, My's on the continuous angles' branch
     for (std::size_t i = 0; i < kDofCount; ++i) {
-        if (plastic(i)) laws_[i].settle(positions[i], forces[i], corrected_motion[i]);
+        if (plastic(i)) laws_[i].settle(positions[i], -loads[i], corrected_motion[i]);
     }
     if (coupling_)
-        detail::coupled_return_mapping(coupling_->condition, coupling_->axes, coupling_->hint, positions, last_loads(),
+        detail::coupled_return_mapping(coupling_->condition, coupling_->axes, coupling_->hint, positions, loads,
                                        plastic_laws());
     summarise();
     if (plastic_displacement() > max_plastic_displacement_ || plastic_rotation() > max_plastic_rotation_) {

@@ -72,9 +72,7 @@ public:
     // accumulated plastic motion grows by |step| and the dissipated energy by load·step.
     void flow(double step, double load);
 
-    DofLaw law() const {
-        return {capacity_positive_, capacity_negative_, has_stiffness() ? std::optional<double>(stiffness_) : std::nullopt};
-    }
+    DofLaw law() const { return {capacity_positive_, capacity_negative_, stiffness()}; }
     Regime regime() const { return regime_; }
     // ω·dt of the last plan (eq. 3.2); 0 without a stiffness or before the first plan.
     double omega_dt() const;
@@ -147,6 +145,7 @@ private:
 
     // A stiffness is positive (validate_dof_law): 0 stands for none.
     bool has_stiffness() const { return stiffness_ > 0.0; }
+    std::optional<double> stiffness() const { return has_stiffness() ? std::optional<double>(stiffness_) : std::nullopt; }
 
     // Members ordered so the small ones share one word. The DofLaw is kept as three doubles, its
     // stiffness without a std::optional's flag: 8 B a dof less for a step to touch (issue 16).
