@@ -210,11 +210,12 @@ TEST(BulletLifecycle, ASleepingJointIsSkippedAndFlowsWhenWoken) {
     EXPECT_NEAR(joint.law().plastic_displacement(), expected, 1e-6 * expected);
 }
 
-// A spring's row is bounded by its force on both sides, so BulletPlasticSolver applies it once, in
-// its set-up, and leaves it out of the iterations, which then solve the other rows in their order
-// (issue 16). In one world: a block on an axial spring, whose rows come first, drops as the
-// oscillator's recurrence says and the joint reports the spring's force as applied; a second block,
-// on a rigid-plastic axial joint after it, flows at its capacity as the rigid-plastic oscillator says.
+// A spring's force is fixed before the solve, so BulletPlasticSolver applies it once, in its set-up,
+// without a row; the iterations solve the other joints' rows (issue 16). In one world: a block on an
+// axial spring, added first, drops as the oscillator's recurrence says, the joint reports the
+// spring's force as applied and the law sees the row's effective mass (the block's, for a row
+// through its centre: ω·dt = √(k/m)·dt, eq. 3.2); a second block, on a rigid-plastic axial joint
+// after it, flows at its capacity as the rigid-plastic oscillator says.
 TEST(BulletLifecycle, ASpringIsAppliedOnceAStepAsTheOscillatorSaysAndTheRowsAfterItStillHold) {
     const double k = 1200.0, F = 18.0;  // ω·dt = √(k/m)·dt = 0.2 ≤ 0.25: an elastic row (eq. 3.2)
     BulletWorld world(btVector3(0, -kG, 0), 10);
@@ -234,6 +235,7 @@ TEST(BulletLifecycle, ASpringIsAppliedOnceAStepAsTheOscillatorSaysAndTheRowsAfte
             world.step(kDt);
             ASSERT_NEAR(-0.5 - sprung.body().getCenterOfMassPosition().y(), drops[static_cast<std::size_t>(i)], 1e-9) << "step " << i;
             ASSERT_NEAR(spring.forces()[index(Dof::N)], k * before, 1e-9) << "step " << i;  // tension k·u of the step's start
+            ASSERT_NEAR(spring.law().law(Dof::N)->omega_dt(), std::sqrt(k / kMass) * kDt, 1e-12) << "step " << i;
             ASSERT_NEAR(-0.5 - flowing.body().getCenterOfMassPosition().y(), drop_after(i + 1, F), 1e-9) << "step " << i;
         }
         EXPECT_NEAR(capacity.law().plastic_displacement(), drop_after(steps, F), 1e-9);

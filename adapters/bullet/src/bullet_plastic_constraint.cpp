@@ -21,25 +21,47 @@ BulletPlasticConstraint::BulletPlasticConstraint(btRigidBody* a, btRigidBody& b,
       frame_in_a_(m_rbA.getCenterOfMassTransform().inverse() * frame_in_world),
       frame_in_b_(b.getCenterOfMassTransform().inverse() * frame_in_world) {}
 
+void BulletPlasticConstraint::set_kind(std::size_t i, RowKind kind) {
+    if (rows_[i].kind == kind) return;  // a plastic dof's every step: nothing to count
+    row_count_ += int(emits_row(kind)) - int(emits_row(rows_[i].kind));
+    push_count_ += int(kind == RowKind::Push) - int(rows_[i].kind == RowKind::Push);
+    rows_[i].kind = kind;
+}
+
 void BulletPlasticConstraint::free_row(std::size_t i) {
-    if (rows_[i].kind != RowKind::None) --row_count_;
+    set_kind(i, RowKind::None);
     rows_[i] = {};
 }
 
 void BulletPlasticConstraint::lock_row(std::size_t i, double at) {
-    if (rows_[i].kind == RowKind::None) ++row_count_;
-    rows_[i].kind = RowKind::Lock;
+    set_kind(i, RowKind::Lock);
     rows_[i].target = at;
 }
 
 void BulletPlasticConstraint::command_row(std::size_t i, const RowCommand& c) {
-    if (rows_[i].kind == RowKind::None) ++row_count_;
     Row& row = rows_[i];  // keeps the force it carried, for the warm start
     if (c.kind == RowCommand::Kind::Hold) {
-        row.kind = RowKind::Hold, row.target = c.velocity, row.lower = c.lower, row.upper = c.upper;
+        set_kind(i, RowKind::Hold);
+        row.target = c.velocity, row.lower = c.lower, row.upper = c.upper;
     } else {
-        row.kind = RowKind::Push, row.target = 0.0, row.lower = c.force, row.upper = c.force;
+        set_kind(i, RowKind::Push);
+        row.target = 0.0, row.lower = c.force, row.upper = c.force;
     }
+}
+
+BulletPlasticConstraint::Levers BulletPlasticConstraint::levers(const JointFrameState& s) const {
+    const btVector3 anchor = to_bt(s.axes.anchor);
+    return {anchor - m_rbA.getCenterOfMassPosition(), anchor - m_rbB.getCenterOfMassPosition()};
+}
+
+BulletPlasticConstraint::RowJacobian BulletPlasticConstraint::jacobian(const JointFrameState& s, const Levers& levers, std::size_t i) {
+    // J·v = the dof's rate: +axis on b, −axis on a; a translation row acts at b's anchor.
+    if (i < 3) {
+        const btVector3 axis = to_bt(s.axes.translation[i]);
+        return {axis, -levers.a.cross(axis), levers.b.cross(axis)};
+    }
+    const btVector3 axis = to_bt(s.axes.rotation[i - 3]);
+    return {btVector3(0, 0, 0), -axis, axis};
 }
 
 const JointFrameState& BulletPlasticConstraint::measure() {
@@ -58,37 +80,30 @@ void BulletPlasticConstraint::getInfo1(btConstraintInfo1* info) {
 
 void BulletPlasticConstraint::getInfo2(btConstraintInfo2* info) {
     const JointFrameState& s = measure();
-    const btVector3 anchor = to_bt(s.axes.anchor);
-    const btVector3 lever_a = anchor - m_rbA.getCenterOfMassPosition();
-    const btVector3 lever_b = anchor - m_rbB.getCenterOfMassPosition();
+    const Levers at_anchor = levers(s);
     const btScalar erp = stop_erp_ >= 0.0 ? stop_erp_ : info->erp;
     const btScalar step = 1.0 / info->fps;  // bounds are impulses over the step: one division, not two a row
     int r = 0;
     for (std::size_t i = 0; i < rows_.size(); ++i) {
         Row& row = rows_[i];
-        if (row.kind == RowKind::None) continue;
+        if (!emits_row(row.kind)) continue;
         const int at = r * info->rowskip;  // the Jacobians' and the row scalars' stride
-        // J·v = the dof's rate: +axis on b, −axis on a; a translation row acts at b's anchor.
-        if (i < 3) {
-            const btVector3 axis = to_bt(s.axes.translation[i]);
-            store(info->m_J1linearAxis + at, -axis);
-            store(info->m_J1angularAxis + at, -lever_a.cross(axis));
-            store(info->m_J2linearAxis + at, axis);
-            store(info->m_J2angularAxis + at, lever_b.cross(axis));
-        } else {
-            const btVector3 axis = to_bt(s.axes.rotation[i - 3]);
-            store(info->m_J1angularAxis + at, -axis);
-            store(info->m_J2angularAxis + at, axis);
+        const RowJacobian j = jacobian(s, at_anchor, i);
+        if (i < 3) {  // Bullet's rows start zeroed: a rotation row has no linear part
+            store(info->m_J1linearAxis + at, -j.linear);
+            store(info->m_J2linearAxis + at, j.linear);
         }
+        store(info->m_J1angularAxis + at, j.angular_a);
+        store(info->m_J2angularAxis + at, j.angular_b);
         // Lock and Hold rows hold a rate of 0 but for their position correction (a Hold row's rate
-        // from the law is all correction); Hold and Push rows are bounded by their force range, as
-        // impulses over the step (a Push row's range is its one force).
+        // from the law is all correction); a Hold row is bounded by its force range, as impulses
+        // over the step.
         if (row.kind == RowKind::Lock) {
             const double error = row.target - s.positions[i];
             row.correction = erp * info->fps * (i >= 3 ? std::remainder(error, kTurn) : error);  // angles: the short way
             info->cfm[at] = stop_cfm_;
         } else {
-            row.correction = row.kind == RowKind::Hold ? row.target : 0.0;
+            row.correction = row.target;
             info->m_lowerLimit[at] = row.lower * step;
             info->m_upperLimit[at] = row.upper * step;
         }

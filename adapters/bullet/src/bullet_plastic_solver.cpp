@@ -47,15 +47,33 @@ void apply_row_impulse(btSolverConstraint& row, btSolverBody& a, btSolverBody& b
     b.internalApplyImpulse(row.m_contactNormal2 * b.internalGetInvMass(), row.m_angularComponentB, impulse);
 }
 
-// A Push row's bounds are both its spring force over the step (the law's explicit spring,
-// docs/adapters.md "The law"). Applied once, here, it is the whole of the row, so the row takes
-// no part in the iterations (Bullet solves a row only while the iteration is below its
-// m_overrideNumSolverIterations): each of them would find it on its bound and change nothing (on
-// 10,000 joints of six springs, 11 % of the step's instructions). The impulse stays the row's
-// m_appliedImpulse, so the joint's feedback reports it as before.
-void apply_spring_force(btSolverConstraint& row, btSolverBody& a, btSolverBody& b) {
-    row.m_overrideNumSolverIterations = 0;
-    apply_row_impulse(row, a, b, row.m_lowerLimit);
+// One body's share of a row's J·M⁻¹·Jᵀ, added to `sum` as Bullet's convertJoint sums it for its
+// jacDiagABInv; returns M⁻¹ on the row's angular part, as its m_angularComponentA/B.
+btVector3 add_share(btScalar& sum, const btRigidBody& body, const btVector3& linear, const btVector3& angular) {
+    const btVector3 turn = body.getInvInertiaTensorWorld() * angular;
+    sum += linear.dot(linear) * body.getInvMass() + angular.dot(turn);
+    return turn * body.getAngularFactor();
+}
+
+// A spring's force f over the step h, applied to both bodies as an impulse f·h along the row's
+// Jacobian (as resolveSingleConstraintRowGeneric applies a row's impulse), and added to the joint's
+// feedback as Bullet adds a row's (solveGroupCacheFriendlyFinish). Returns the row's effective mass
+// 1/(J·M⁻¹·Jᵀ), NaN where J·M⁻¹·Jᵀ is below Bullet's epsilon.
+double apply_push(btTypedConstraint& c, btSolverBody& a, btSolverBody& b, const BulletPlasticConstraint::RowJacobian& j,
+                  double force, btScalar h) {
+    btScalar sum = 0.0;
+    const btVector3 turn_a = add_share(sum, c.getRigidBodyA(), -j.linear, j.angular_a);
+    const btVector3 turn_b = add_share(sum, c.getRigidBodyB(), j.linear, j.angular_b);
+    const btScalar impulse = force * h;
+    a.internalApplyImpulse(-j.linear * a.internalGetInvMass(), turn_a, impulse);
+    b.internalApplyImpulse(j.linear * b.internalGetInvMass(), turn_b, impulse);
+    if (btJointFeedback* fb = c.getJointFeedback()) {
+        fb->m_appliedForceBodyA += -j.linear * c.getRigidBodyA().getLinearFactor() * force;
+        fb->m_appliedTorqueBodyA += j.angular_a * c.getRigidBodyA().getAngularFactor() * force;
+        fb->m_appliedForceBodyB += j.linear * c.getRigidBodyB().getLinearFactor() * force;
+        fb->m_appliedTorqueBodyB += j.angular_b * c.getRigidBodyB().getAngularFactor() * force;
+    }
+    return sum > SIMD_EPSILON ? 1.0 / sum : NAN;
 }
 
 }  // namespace
@@ -69,11 +87,10 @@ void BulletPlasticSolver::for_each_row(Act&& act) {
 }
 
 void BulletPlasticSolver::convertJoints(btTypedConstraint** constraints, int count, const btContactSolverInfo& info) {
-    const bool split = info.m_splitImpulse != 0;
     joints_.clear();
     for (int i = 0; i < count; ++i) {
         if (BulletPlasticConstraint* c = plascap_constraint(constraints[i])) {
-            c->split_corrections(split);  // before Bullet's getInfo2 writes the rows
+            c->split_corrections(info.m_splitImpulse != 0);  // before Bullet's getInfo2 writes the rows
             joints_.push_back({c, i, 0, 0});
         }
     }
@@ -90,53 +107,35 @@ void BulletPlasticSolver::convertJoints(btTypedConstraint** constraints, int cou
         at += rows;
     }
     largest_correction_ = 0.0;
-    spring_rows_.clear();
-    for_each_row([&](BulletPlasticConstraint& c, std::size_t k, btSolverConstraint& row) {
-        // Bullet's jacDiagABInv is the row's effective mass 1/(J·M⁻¹·Jᵀ) (0 when J·M⁻¹·Jᵀ is below
-        // its epsilon: not known then).
-        c.note_row_mass(k, row.m_jacDiagABInv > 0.0 ? row.m_jacDiagABInv : NAN);
-        if (!c.holds_position(k)) {
-            apply_spring_force(row, m_tmpSolverBodyPool[row.m_solverBodyIdA], m_tmpSolverBodyPool[row.m_solverBodyIdB]);
-            spring_rows_.push_back(static_cast<int>(&row - &m_tmpSolverNonContactConstraintPool[0]));
-            return;
-        }
-        if (split) {
-            const double rate = c.correction_rate(k);
-            row.m_rhsPenetration = rate * row.m_jacDiagABInv;
-            largest_correction_ = std::max(largest_correction_, std::abs(rate));
-        }
-        // The warm start, as resolveSingleConstraintRowGeneric applies an impulse.
-        const btScalar impulse = std::clamp<btScalar>(c.carried_force(k) * info.m_timeStep, row.m_lowerLimit, row.m_upperLimit);
-        if (impulse == 0.0) return;
-        apply_row_impulse(row, m_tmpSolverBodyPool[row.m_solverBodyIdA], m_tmpSolverBodyPool[row.m_solverBodyIdB], impulse);
+    // One pass over the joints: each one's springs, then its rows, while its state is in the cache.
+    for (const PlascapRows& joint : joints_) {
+        apply_pushes(*joint.constraint, info);
+        for (int k = 0; k < joint.count; ++k)
+            set_up_row(*joint.constraint, static_cast<std::size_t>(k), m_tmpSolverNonContactConstraintPool[joint.first + k], info);
+    }
+}
+
+void BulletPlasticSolver::apply_pushes(BulletPlasticConstraint& c, const btContactSolverInfo& info) {
+    c.apply_pushes([&](const BulletPlasticConstraint::RowJacobian& j, double force) {
+        btSolverBody& a = m_tmpSolverBodyPool[getOrInitSolverBody(c.getRigidBodyA(), info.m_timeStep)];
+        btSolverBody& b = m_tmpSolverBodyPool[getOrInitSolverBody(c.getRigidBodyB(), info.m_timeStep)];
+        return apply_push(c, a, b, j, force, info.m_timeStep);
     });
 }
 
-btScalar BulletPlasticSolver::solveGroupCacheFriendlySetup(btCollisionObject** bodies, int body_count,
-                                                            btPersistentManifold** manifolds, int manifold_count,
-                                                            btTypedConstraint** constraints, int constraint_count,
-                                                            const btContactSolverInfo& info, btIDebugDraw* drawer) {
-    const btScalar result = btSequentialImpulseConstraintSolver::solveGroupCacheFriendlySetup(
-        bodies, body_count, manifolds, manifold_count, constraints, constraint_count, info, drawer);
-    order_springs_last();
-    return result;
-}
-
-void BulletPlasticSolver::order_springs_last() {
-    if (spring_rows_.empty()) return;
-    // The others keep their order (and so the solve its result); spring_rows_ is in pool order.
-    int at = 0;
-    auto spring = spring_rows_.begin();
-    for (int i = 0; i < m_tmpSolverNonContactConstraintPool.size(); ++i) {
-        if (spring != spring_rows_.end() && *spring == i) {
-            ++spring;
-            continue;
-        }
-        m_orderNonContactConstraintPool[at++] = i;
+void BulletPlasticSolver::set_up_row(BulletPlasticConstraint& c, std::size_t k, btSolverConstraint& row, const btContactSolverInfo& info) {
+    // Bullet's jacDiagABInv is the row's effective mass 1/(J·M⁻¹·Jᵀ) (0 when J·M⁻¹·Jᵀ is below
+    // its epsilon: not known then).
+    c.note_row_mass(k, row.m_jacDiagABInv > 0.0 ? row.m_jacDiagABInv : NAN);
+    if (info.m_splitImpulse) {
+        const double rate = c.correction_rate(k);
+        row.m_rhsPenetration = rate * row.m_jacDiagABInv;
+        largest_correction_ = std::max(largest_correction_, std::abs(rate));
     }
-    // The loop still runs over as many entries as the pool has rows: each one left points at the
-    // first spring row, which every iteration skips from the cache instead of loading a row of its own.
-    while (at < m_tmpSolverNonContactConstraintPool.size()) m_orderNonContactConstraintPool[at++] = spring_rows_.front();
+    // The warm start, as resolveSingleConstraintRowGeneric applies an impulse.
+    const btScalar impulse = std::clamp<btScalar>(c.carried_force(k) * info.m_timeStep, row.m_lowerLimit, row.m_upperLimit);
+    if (impulse == 0.0) return;
+    apply_row_impulse(row, m_tmpSolverBodyPool[row.m_solverBodyIdA], m_tmpSolverBodyPool[row.m_solverBodyIdB], impulse);
 }
 
 void BulletPlasticSolver::solveGroupCacheFriendlySplitImpulseIterations(
@@ -151,8 +150,7 @@ void BulletPlasticSolver::solveGroupCacheFriendlySplitImpulseIterations(
     // corrections are nil).
     for (int iteration = 0; iteration < push_iterations(info); ++iteration) {
         btScalar largest = 0.0;  // of the impulse changes over the effective masses: rate changes
-        for_each_row([&](BulletPlasticConstraint& c, std::size_t k, btSolverConstraint& row) {
-            if (!c.holds_position(k)) return;
+        for_each_row([&](BulletPlasticConstraint&, std::size_t, btSolverConstraint& row) {
             const btScalar change = resolve_push(m_tmpSolverBodyPool[row.m_solverBodyIdA], m_tmpSolverBodyPool[row.m_solverBodyIdB], row);
             if (row.m_jacDiagABInv > 0.0) largest = std::max(largest, change / row.m_jacDiagABInv);
         });

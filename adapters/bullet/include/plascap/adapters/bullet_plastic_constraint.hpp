@@ -1,9 +1,10 @@
 #pragma once
 // plascap's own Bullet constraint for a plastic joint: it emits exactly the rows its dofs need —
-// none for a free dof, a locked row for a rigid one, and for a plastic one the row the shared law
-// commands (Hold: a rate target within the force range [lower, upper], both capacities at once;
-// Push: exactly the spring force) — where Bullet's 6-dof springs, driven from outside, carry every
-// axis's limit, motor and spring machinery and one symmetric motor bound.
+// none for a free dof, a locked row for a rigid one, and for a plastic one what the shared law
+// commands (Hold: a row with a rate target within the force range [lower, upper], both capacities
+// at once; Push: exactly the spring force, which BulletPlasticSolver applies once, without a row:
+// apply_pushes) — where Bullet's 6-dof springs, driven from outside, carry every axis's limit,
+// motor and spring machinery and one symmetric motor bound.
 //   translations: the components, along a's frame axes, of b's anchor minus a's; the rows act at
 //     b's anchor on both bodies, which makes each row's rate the exact rate of its component;
 //   rotations: swing and twist (swing_twist.hpp), the rows along their exact gradients — no
@@ -45,9 +46,29 @@ public:
     // instead; correction_rate(k) gives each written row's correction [m/s | rad/s].
     void split_corrections(bool on) { split_corrections_ = on; }
     double correction_rate(std::size_t k) const { return k < written_ ? rows_[written_dof_[k]].correction : 0.0; }
-    // Whether the k-th written row holds a position (Lock, Hold) and so takes part in the pushes; a
-    // Push row applies its force and nothing else.
-    bool holds_position(std::size_t k) const { return k < written_ && rows_[written_dof_[k]].kind != RowKind::Push; }
+    // A row's Jacobian: J·v is its dof's rate; the linear part on b (−linear on a; zero for a rotation).
+    struct RowJacobian {
+        btVector3 linear, angular_a, angular_b;
+    };
+    // The Push dofs (the law's springs), which getInfo1 and getInfo2 leave out: a row whose force is
+    // fixed before the solve takes no part in its iterations, and left in Bullet's row pool it
+    // would only spread the rows the iterations read (docs/adapters.md, Bullet, "Springs without
+    // rows"). `apply(jacobian, force)` applies the force [N | N·m] over the step to both bodies
+    // and returns the row's effective mass 1/(J·M⁻¹·Jᵀ) (NaN if not known); the force is the dof's
+    // carried force, and its effective mass the law's (solved_masses), as for a written row.
+    template <class Apply>
+    void apply_pushes(Apply&& apply) {
+        if (push_count_ == 0) return;  // most joints: their rows need not be read
+        const JointFrameState& s = measure();  // cached since the joint's plan: the bodies have not moved
+        const Levers at_anchor = levers(s);
+        for (std::size_t i = 0; i < rows_.size(); ++i) {
+            Row& row = rows_[i];
+            if (row.kind != RowKind::Push) continue;
+            row.solved_mass = apply(jacobian(s, at_anchor, i), row.lower);
+            row.carried = row.lower;
+            row.pushed = 0.0;  // a spring's law books no motion apart (elastic_plastic_law.hpp)
+        }
+    }
     // The force the k-th row written by the last getInfo2 carried when its step was solved (0 before
     // the first) [N | N·m], for BulletPlasticSolver's warm start; and the solver's report of it.
     double carried_force(std::size_t k) const { return k < written_ ? rows_[written_dof_[k]].carried : 0.0; }
@@ -87,6 +108,13 @@ public:
 
 private:
     enum class RowKind { None, Lock, Hold, Push };
+    static bool emits_row(RowKind kind) { return kind == RowKind::Lock || kind == RowKind::Hold; }
+    void set_kind(std::size_t i, RowKind kind);  // keeps row_count_ and push_count_
+    struct Levers {
+        btVector3 a, b;  // the anchor less each body's centre of mass [m]
+    };
+    Levers levers(const JointFrameState& s) const;
+    static RowJacobian jacobian(const JointFrameState& s, const Levers& levers, std::size_t i);
     struct Row {
         RowKind kind = RowKind::None;
         double target = 0.0;  // Lock: position; Hold: rate
@@ -99,7 +127,8 @@ private:
 
     btTransform frame_in_a_, frame_in_b_;
     std::array<Row, 6> rows_{};
-    int row_count_ = 0;
+    int row_count_ = 0;   // of Lock and Hold rows: those getInfo2 writes
+    int push_count_ = 0;  // of Push dofs
     std::array<std::size_t, 6> written_dof_{};  // the dof of each row the last getInfo2 wrote
     std::size_t written_ = 0;
     bool split_corrections_ = false;

@@ -1,6 +1,6 @@
 #pragma once
 // Bullet's sequential-impulse solver, made for plascap's rows: it warm-starts them, corrects
-// their drift by split impulses, and applies a spring's row (Push) once instead of every iteration.
+// their drift by split impulses, and applies a spring's force (Push) once, without a row.
 //   Warm start: Bullet warm-starts contacts from the last step's impulses but starts every joint row
 //   from zero (btSequentialImpulseConstraintSolver::convertJoint), so a chain of joints under a
 //   sustained load re-solves its whole load each step and sags by what the iterations leave
@@ -13,9 +13,9 @@
 //   their corrections feeds those corrections back step after step — on the example beam at 100
 //   iterations a growing oscillation that folded it (docs/adapters.md, "Bullet's solver") — and the
 //   correction's velocity would remain as kinetic energy.
-//   Springs: a Push row's force is fixed before the solve (the law's explicit spring), so it is
-//   applied to the bodies in the set-up and left out of the iterations, as ODE's adapter puts the
-//   same force on its bodies without a row.
+//   Springs: a Push dof's force is fixed before the solve (the law's explicit spring), so it is
+//   applied to the bodies in the set-up, without a row (BulletPlasticConstraint::apply_pushes), as
+//   ODE's adapter puts the same force on its bodies.
 // The pushes are integrated by Bullet only with m_splitImpulse on (its default); their rotations are
 // scaled by m_splitImpulseTurnErp (default 0.1, BulletWorld sets 1). Use this solver as the world's
 // constraint solver (BulletWorld does); with any other solver plascap's joints work, cold-started,
@@ -23,6 +23,7 @@
 #include <btBulletDynamicsCommon.h>
 
 #include <algorithm>
+#include <cstddef>
 #include <vector>
 
 namespace plascap {
@@ -38,9 +39,6 @@ public:
     double correction_work() const { return correction_work_; }
 
 protected:
-    btScalar solveGroupCacheFriendlySetup(btCollisionObject** bodies, int body_count, btPersistentManifold** manifolds,
-                                          int manifold_count, btTypedConstraint** constraints, int constraint_count,
-                                          const btContactSolverInfo& info, btIDebugDraw* drawer) override;
     void convertJoints(btTypedConstraint** constraints, int count, const btContactSolverInfo& info) override;
     void solveGroupCacheFriendlySplitImpulseIterations(btCollisionObject** bodies, int body_count,
                                                        btPersistentManifold** manifolds, int manifold_count,
@@ -61,15 +59,10 @@ private:
         int count;
     };
     std::vector<PlascapRows> joints_;  // this solve's
-    // This solve's spring (Push) rows, in pool order: applied in the set-up, solved by no iteration.
-    std::vector<int> spring_rows_;
-    // Puts the spring rows after the others in the iterations' order (m_orderNonContactConstraintPool),
-    // every entry past the others pointing at one spring row: each iteration still runs over as
-    // many entries as the pool has rows and skips those, reading one line already in the cache. Left
-    // between the rows the iterations solve, a skip taken or not by turns cost 10,000 joints of four
-    // rows and two springs more time than the springs' ten solves had, for fewer instructions
-    // (docs/adapters.md, "What elastic-plastic measured").
-    void order_springs_last();
+    // The set-up of one joint: its springs' forces applied to its bodies, and its k-th row's
+    // effective mass noted, its correction rate set as a push target, its warm start applied.
+    void apply_pushes(BulletPlasticConstraint& c, const btContactSolverInfo& info);
+    void set_up_row(BulletPlasticConstraint& c, std::size_t k, btSolverConstraint& row, const btContactSolverInfo& info);
     // Calls `act(constraint, k, row)` for each row of this solve's plascap constraints.
     template <class Act>
     void for_each_row(Act&& act);
