@@ -243,6 +243,29 @@ TEST(BulletLifecycle, ASpringIsAppliedOnceAStepAsTheOscillatorSaysAndTheRowsAfte
     world.world().removeRigidBody(&flowing.body());
     world.world().removeRigidBody(&sprung.body());
 }
+
+// A disabled constraint has no rows in the solve (Bullet asks it for none), and BulletPlasticSolver
+// applies none of its springs either: a block on an axial spring, stretched so the spring pulls
+// about 40 N against its 30 N weight, falls freely once its constraint is disabled.
+TEST(BulletLifecycle, ADisabledJointsSpringPushesNothing) {
+    const double k = 1200.0;  // ω·dt = 0.2: an elastic row (eq. 3.2)
+    BulletWorld world(btVector3(0, -kG, 0), 10);
+    BulletBox block(btVector3(0.1, 0.1, 0.1), kMass, at(-0.5));
+    world.world().addRigidBody(&block.body());
+    {
+        BulletPlasticJoint spring(nullptr, block.body(), btTransform::getIdentity(), axial_spring(k));
+        spring.attach(world.world(), kDt);
+        for (int i = 0; i < 10; ++i) world.step(kDt);
+        ASSERT_GT(k * (-0.5 - block.body().getCenterOfMassPosition().y()), kMass * kG);
+        spring.constraint().setEnabled(false);
+        const double v0 = block.body().getLinearVelocity().y();
+        for (int i = 1; i <= 10; ++i) {
+            world.step(kDt);
+            ASSERT_NEAR(block.body().getLinearVelocity().y(), v0 - kG * kDt * i, 1e-9) << "step " << i;
+        }
+    }
+    world.world().removeRigidBody(&block.body());
+}
 #endif
 
 #ifdef PLASCAP_HAVE_ODE

@@ -89,7 +89,9 @@ void BulletPlasticSolver::for_each_row(Act&& act) {
 void BulletPlasticSolver::convertJoints(btTypedConstraint** constraints, int count, const btContactSolverInfo& info) {
     joints_.clear();
     for (int i = 0; i < count; ++i) {
-        if (BulletPlasticConstraint* c = plascap_constraint(constraints[i])) {
+        // A disabled constraint has no rows (Bullet asks it for none), and its springs no force.
+        BulletPlasticConstraint* c = plascap_constraint(constraints[i]);
+        if (c != nullptr && c->isEnabled()) {
             c->split_corrections(info.m_splitImpulse != 0);  // before Bullet's getInfo2 writes the rows
             joints_.push_back({c, i, 0, 0});
         }
