@@ -5,14 +5,10 @@
 // build/bench/bench_bullet_joints (docs/adapters.md, "Cost").
 #include <benchmark/benchmark.h>
 
-#include <BulletCollision/CollisionDispatch/btSimulationIslandManager.h>
-#include <BulletDynamics/ConstraintSolver/btFixedConstraint.h>
-
 #include <memory>
 #include <vector>
 
 #include "plascap/adapters/bullet_plastic_joint.hpp"
-#include "plascap/adapters/bullet_world.hpp"
 #include "bullet_hanging_boxes.hpp"
 #include "hanging_box_springs.hpp"
 #include "joint_yield_settings.hpp"

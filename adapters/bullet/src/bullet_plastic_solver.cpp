@@ -118,10 +118,14 @@ void BulletPlasticSolver::convertJoints(btTypedConstraint** constraints, int cou
 }
 
 void BulletPlasticSolver::apply_pushes(BulletPlasticConstraint& c, const btContactSolverInfo& info) {
+    btSolverBody* a = nullptr;  // looked up once a joint, at its first spring
+    btSolverBody* b = nullptr;
     c.apply_pushes([&](const BulletPlasticConstraint::RowJacobian& j, double force) {
-        btSolverBody& a = m_tmpSolverBodyPool[getOrInitSolverBody(c.getRigidBodyA(), info.m_timeStep)];
-        btSolverBody& b = m_tmpSolverBodyPool[getOrInitSolverBody(c.getRigidBodyB(), info.m_timeStep)];
-        return apply_push(c, a, b, j, force, info.m_timeStep);
+        if (a == nullptr) {
+            a = &m_tmpSolverBodyPool[getOrInitSolverBody(c.getRigidBodyA(), info.m_timeStep)];
+            b = &m_tmpSolverBodyPool[getOrInitSolverBody(c.getRigidBodyB(), info.m_timeStep)];
+        }
+        return apply_push(c, *a, *b, j, force, info.m_timeStep);
     });
 }
 
