@@ -515,6 +515,21 @@ TEST(OdeLifecycle, AYieldingJointKeepsItsBodiesAwake) {
     EXPECT_NEAR(-0.5 - dBodyGetPosition(block)[1], drop_after(steps, F), 1e-6 * drop_after(steps, F));
 }
 
+// The same creep on QuickStep with split corrections (a warm start, and the position corrections in
+// a pass of their own): the row at its capacity lets the block accelerate at (m·g − F)/m, as the
+// oscillator says, and the pass, with nothing to correct along a flowing row, adds no motion.
+TEST(OdeLifecycle, SplitCorrectionsLetAYieldingJointCreepAsTheOscillatorSays) {
+    const double F = kMass * kG * (1 - 1.0 / 600);
+    OdeWorld ode;
+    const dBodyID block = ode.box(-0.5);
+    OdePlasticJoints joints(ode.world);
+    joints.add(nullptr, block, Pose{}, axial(F));
+    const int steps = 500;
+    for (int i = 0; i < steps; ++i) joints.step(kDt, OdePlasticJoints::Stepper::QuickSplit);
+    EXPECT_NEAR(-0.5 - dBodyGetPosition(block)[1], drop_after(steps, F), 1e-6 * drop_after(steps, F));
+    EXPECT_NEAR(joints[0].law().plastic_displacement(), drop_after(steps, F), 1e-6 * drop_after(steps, F));
+}
+
 // A joint whose bodies sleep costs a glance: ODE skips their island, so the joint is neither settled
 // nor planned (solved() false) — its law stays as it was, its clock runs on — and when the block is
 // woken and pushed past the capacity, the rows planned before it slept flow at once, as the

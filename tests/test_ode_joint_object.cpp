@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "../adapters/ode/src/ode_plastic_rows.hpp"
+#include "../adapters/ode/src/ode_world_bodies.hpp"
 #include "plascap/adapters/ode_plastic_joint.hpp"
 
 namespace plascap {
@@ -39,6 +40,23 @@ TEST(OdeJointObject, HasTheSizeOfOdesOwnNullJoint) {
     EXPECT_EQ(null_joint->size(), sizeof(dxJoint));
     EXPECT_EQ(null_joint->type(), dJointTypeNull);
     dJointDestroy(null_joint);
+}
+
+// ODE lists no world's bodies; OdeWorldBodies walks the world's own list (dObject's next), found
+// through a body made and destroyed at once: it must find exactly the bodies made, before and after
+// it was set up, and none destroyed.
+TEST(OdeWorldBodies, ListsEveryBodyOfTheWorldAndNoOther) {
+    OdeWorld w;
+    OdeWorldBodies bodies(w.world);
+    const dBodyID c = dBodyCreate(w.world);
+    const dBodyID d = dBodyCreate(w.world);
+    EXPECT_EQ(bodies.list(), (std::vector<dBodyID>{d, c, w.b, w.a}));  // ODE's order: newest first
+    dBodyDestroy(c);
+    EXPECT_EQ(bodies.list(), (std::vector<dBodyID>{d, w.b, w.a}));
+    dBodyDestroy(d);
+    dBodyDestroy(w.b);
+    dBodyDestroy(w.a);
+    EXPECT_TRUE(bodies.list().empty());
 }
 
 TEST(OdeJointObject, ReadsWhereOdeKeepsAJointsWorldBodiesAndFeedback) {

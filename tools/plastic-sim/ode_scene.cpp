@@ -90,7 +90,7 @@ public:
     void step() override {
         for (std::size_t i : schedule_.severed(time_)) joints_[i].sever();
         joints_.collide(space_, contacts_, surface_, kMaxContacts, skip_segments_);
-        joints_.step(scene_.dt, quick_ ? OdePlasticJoints::Stepper::Quick : OdePlasticJoints::Stepper::Exact);
+        joints_.step(scene_.dt, quick_ ? OdePlasticJoints::Stepper::QuickSplit : OdePlasticJoints::Stepper::Exact);
         dJointGroupEmpty(contacts_);
         ++steps_;
         time_ = static_cast<double>(steps_) * scene_.dt;
@@ -98,6 +98,7 @@ public:
 
     double time() const override { return time_; }
     double contact_work() const override { return joints_.contact_work(); }
+    double correction_work() const override { return joints_.correction_work(); }
 
     void apply_load(std::size_t index, const Vec3& force, const Vec3& point, const Vec3& moment) override {
         if (!bodies_[index]) return;  // a static body takes no load

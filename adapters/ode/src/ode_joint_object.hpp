@@ -76,9 +76,8 @@ struct dxJoint : dObject {
 };
 
 namespace plascap::ode_joint_object {
-// Where ODE's row arrays keep each value (ODE's joint.h: GI2_RHS, GI2_LO, GI2_HI; the CFM, at 1,
-// is left as ODE set it).
-constexpr int kRhs = 0, kLo = 0, kHi = 1;
+// Where ODE's row arrays keep each value (ODE's joint.h: GI2_RHS, GI2_CFM, GI2_LO, GI2_HI).
+constexpr int kRhs = 0, kCfm = 1, kLo = 0, kHi = 1;
 constexpr std::size_t kSize = 160;  // sizeof(dxJoint) in libode 0.16, x86-64
 }  // namespace plascap::ode_joint_object
 

@@ -66,6 +66,11 @@ std::optional<OdeRowTarget> row_target(DofMode mode, const std::optional<RowComm
     return OdeRowTarget{0.0, command->force, command->force};  // pinned: the spring's force, pushed (set_rows)
 }
 
+// The work of a load held over a motion at `velocity` for dt [J].
+double load_work(const WorldLoad& load, const BodyVelocity& velocity, double dt) {
+    return (dot(load.force, velocity.linear) + dot(load.torque_about_com, velocity.angular)) * dt;
+}
+
 }  // namespace
 
 OdePlasticJoint::OdePlasticJoint(dWorldID world, dBodyID a, dBodyID b, const Pose& frame_in_world,
@@ -142,6 +147,30 @@ void OdePlasticJoint::plan(const JointFrameState& state, double dt) {
     });
 }
 
+void OdePlasticJoint::split_corrections(bool on) { rows_->split_corrections(on); }
+
+void OdePlasticJoint::begin_correction_pass() {
+    if (driver_.broken() || !stepped()) {
+        rows_->begin_correction_pass(std::nullopt);
+        return;
+    }
+    WorldLoad on_b = feedback_on_b();
+    WorldLoad on_a;
+    rows_->add_pushes(on_b, on_a);
+    rows_->begin_correction_pass(rows_->forces_on_b(on_b));
+}
+
+double OdePlasticJoint::end_correction_pass(double dt) {
+    if (!rows_->end_correction_pass(dt)) return 0.0;  // not in the step: its loads were not either
+    // The pushes' and warm starts' loads were in the bodies' accumulators for the step, with the
+    // caller's: their work over the pass's motion is the joint's, not the caller's loads'.
+    WorldLoad on_b, on_a;
+    rows_->add_pushes(on_b, on_a);
+    return load_work(on_b, body_velocity(b_), dt) + (a_ ? load_work(on_a, body_velocity(a_), dt) : 0.0);
+}
+
+double OdePlasticJoint::largest_correction() const { return rows_->largest_correction(); }
+
 void OdePlasticJoint::prefetch() const { prefetch_object(this); }
 
 void OdePlasticJoint::prefetch_rows() const { prefetch_object(rows_); }
@@ -158,14 +187,20 @@ JointEvent OdePlasticJoint::after_step(double dt) {
     return settle(measure(), dt);
 }
 
-JointEvent OdePlasticJoint::settle(const JointFrameState& state, double dt) {
+WorldLoad OdePlasticJoint::feedback_on_b() const {
     // Bodies are attached as (b, a): ODE's f1, t1 act on b, and f2, t2 on a.
-    WorldLoad on_b{{feedback_.f1[0], feedback_.f1[1], feedback_.f1[2]}, {feedback_.t1[0], feedback_.t1[1], feedback_.t1[2]}};
+    return {{feedback_.f1[0], feedback_.f1[1], feedback_.f1[2]}, {feedback_.t1[0], feedback_.t1[1], feedback_.t1[2]}};
+}
+
+JointEvent OdePlasticJoint::settle(const JointFrameState& state, double dt) {
+    WorldLoad on_b = feedback_on_b();
     WorldLoad on_a{{feedback_.f2[0], feedback_.f2[1], feedback_.f2[2]}, {feedback_.t2[0], feedback_.t2[1], feedback_.t2[2]}};
     rows_->pushes_taken();  // the step that solved the joint applied them
     rows_->add_pushes(on_b, on_a);
     if (rows_work_.counting()) rows_work_.step_ends(on_b, on_a, body_velocity(b_), a_body_velocity(), dt);
-    const JointEvent event = driver_.settle(rows_->forces_on_b(on_b), state.positions, dt);
+    const PerDof<double> forces = rows_->forces_on_b(on_b);
+    rows_->remember_forces(forces);
+    const JointEvent event = driver_.settle(forces, state.positions, dt, rows_->corrected_motion());
     mark_feedback_unwritten();  // read: a step that leaves it so did not solve the joint
     return act_on(event);
 }

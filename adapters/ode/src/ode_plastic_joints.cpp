@@ -5,12 +5,38 @@
 
 #include "plascap/adapters/prefetch.hpp"
 #include "ode_body_velocity.hpp"
+#include "ode_world_bodies.hpp"
 
 namespace plascap {
+
+namespace {
+
+// Below this largest correction rate [m/s | rad/s] the pass is skipped: a structure at rest has
+// nothing to correct (as plascap's Bullet solver skips its pushes).
+constexpr double kNothingToCorrect = 1e-6;
+
+// The work of a load held over a motion at `velocity` for dt [J].
+double load_work(const WorldLoad& load, const BodyVelocity& velocity, double dt) {
+    return (dot(load.force, velocity.linear) + dot(load.torque_about_com, velocity.angular)) * dt;
+}
+
+void set_velocity(dBodyID body, const BodyVelocity& v) {
+    dBodySetLinearVel(body, v.linear[0], v.linear[1], v.linear[2]);
+    dBodySetAngularVel(body, v.angular[0], v.angular[1], v.angular[2]);
+}
+
+}  // namespace
+
+OdePlasticJoints::OdePlasticJoints(dWorldID world) : world_(world) {}
+
+OdePlasticJoints::~OdePlasticJoints() = default;
+OdePlasticJoints::OdePlasticJoints(OdePlasticJoints&&) noexcept = default;
+OdePlasticJoints& OdePlasticJoints::operator=(OdePlasticJoints&&) noexcept = default;
 
 OdePlasticJoint& OdePlasticJoints::add(dBodyID a, dBodyID b, const Pose& frame_in_world,
                                        const PlasticJointSettings& settings, double takes_hold_at) {
     joints_.push_back({std::make_unique<OdePlasticJoint>(world_, a, b, frame_in_world, settings), takes_hold_at});
+    if (split_) joints_.back().joint->split_corrections(true);
     if (a) joined_.insert(std::minmax(a, b));
     return *joints_.back().joint;
 }
@@ -21,6 +47,10 @@ void OdePlasticJoints::step(double dt, Stepper stepper) {
     // A joint's plan made as the last step settled it is for a step of the last step's dt. With a dt
     // that changes from step to step every such plan would be made again, so plans are made ahead
     // only once the dt has repeated, and used only while it does.
+    if ((stepper == Stepper::QuickSplit) != split_) {
+        split_corrections(stepper == Stepper::QuickSplit);
+        last_dt_ = std::numeric_limits<double>::quiet_NaN();  // plans made ahead were for the other stepper
+    }
     const bool dt_repeats = dt == last_dt_;
     last_dt_ = dt;
     const auto planned = [&](const Entry& e) { return dt_repeats && e.ready; };
@@ -43,10 +73,14 @@ void OdePlasticJoints::step(double dt, Stepper stepper) {
         for (int k = 0; k < 2; ++k) contact.start[k] = body_velocity(contact.body[k]);
     if (stepper == Stepper::Quick) {
         dWorldQuickStep(world_, dt);
+        book_contact_work(dt);
+    } else if (stepper == Stepper::QuickSplit) {
+        split_step(dt);  // books the contacts' work before its correction pass
     } else {
         dWorldStep(world_, dt);
+        book_contact_work(dt);
     }
-    book_contact_work(dt);
+    contacts_.clear();  // their joints go with the caller's contact group
     solved_joints_ = 0;
     for (std::size_t i = 0; i < joints_.size(); ++i) {
         prefetch_ahead_of(i, false);
@@ -63,6 +97,63 @@ void OdePlasticJoints::step(double dt, Stepper stepper) {
     time_ += dt;
 }
 
+void OdePlasticJoints::split_corrections(bool on) {
+    split_ = on;
+    for (Entry& e : joints_) e.joint->split_corrections(on);
+}
+
+void OdePlasticJoints::split_step(double dt) {
+    // The loads on each body in the step: the accumulators (the caller's loads, and the joints'
+    // pushes and warm starts, which end_correction_pass takes back out) and gravity.
+    if (!bodies_) bodies_ = std::make_unique<OdeWorldBodies>(world_);
+    dVector3 gravity;
+    dWorldGetGravity(world_, gravity);
+    records_.clear();
+    for (dBodyID body : bodies_->list()) {
+        const dReal* f = dBodyGetForce(body);
+        const dReal* t = dBodyGetTorque(body);
+        BodyRecord r{body, {{f[0], f[1], f[2]}, {t[0], t[1], t[2]}}, {}};
+        if (dBodyGetGravityMode(body)) {
+            dMass m;
+            dBodyGetMass(body, &m);
+            for (int k = 0; k < 3; ++k) r.load.force[k] += m.mass * gravity[k];
+        }
+        records_.push_back(r);
+    }
+    dWorldQuickStep(world_, dt);
+    book_contact_work(dt);
+    correction_pass(dt);
+}
+
+void OdePlasticJoints::correction_pass(double dt) {
+    double largest = 0.0;
+    for (const Entry& e : joints_)
+        if (e.joint->engaged()) largest = std::max(largest, e.joint->largest_correction());
+    if (largest < kNothingToCorrect) return;
+    // From rest, with no gravity or loads: the bodies move by the corrections alone. Every joint of
+    // the world takes part: contacts keep the bodies out of one another (and make their own
+    // position corrections once more), the caller's joints make theirs once more.
+    dVector3 gravity;
+    dWorldGetGravity(world_, gravity);
+    dWorldSetGravity(world_, 0, 0, 0);
+    for (BodyRecord& r : records_) {
+        r.velocity = body_velocity(r.body);
+        set_velocity(r.body, {});
+    }
+    for (Entry& e : joints_) e.joint->begin_correction_pass();
+    // Half the step's iterations, as plascap's Bullet solver gives its pushes (bullet_plastic_solver.hpp).
+    const int iterations = dWorldGetQuickStepNumIterations(world_);
+    dWorldSetQuickStepNumIterations(world_, std::max(1, iterations / 2));
+    dWorldQuickStep(world_, dt);
+    dWorldSetQuickStepNumIterations(world_, iterations);
+    // The loads did work over the pass's motion that no velocity carried (as Bullet's pushes: the
+    // ledger's `corrections`).
+    for (const BodyRecord& r : records_) correction_work_ -= load_work(r.load, body_velocity(r.body), dt);
+    for (Entry& e : joints_) correction_work_ += e.joint->end_correction_pass(dt);
+    dWorldSetGravity(world_, gravity[0], gravity[1], gravity[2]);
+    for (const BodyRecord& r : records_) set_velocity(r.body, r.velocity);
+}
+
 // Each contact's force and torque on each body (its feedback, constant over the step) times dt is the
 // impulse it gave that body: its work from the body's velocities before and after (impulse_work.hpp).
 void OdePlasticJoints::book_contact_work(double dt) {
@@ -77,7 +168,6 @@ void OdePlasticJoints::book_contact_work(double dt) {
             contact_work_ += impulse_work(impulse, angular, contact.start[k], body_velocity(contact.body[k]));
         }
     }
-    contacts_.clear();  // their joints go with the caller's contact group
 }
 
 bool OdePlasticJoints::joined(dBodyID a, dBodyID b) const { return joined_.count(std::minmax(a, b)) > 0; }

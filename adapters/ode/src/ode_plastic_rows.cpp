@@ -1,7 +1,10 @@
 #include "ode_plastic_rows.hpp"
 
+#include <algorithm>
+#include <bitset>
 #include <cmath>
 
+#include "ode_body_velocity.hpp"
 #include "plascap/adapters/prefetch.hpp"
 
 namespace plascap {
@@ -68,6 +71,11 @@ void OdePlasticRows::count_rows() {
 }
 
 void OdePlasticRows::getInfo1(Info1* info) {
+    if (correcting_) {
+        info->m = static_cast<std::uint8_t>(std::bitset<kDofCount>(pass_rows()).count());
+        info->nub = 0;  // the pass is QuickStep's, which reads no nub
+        return;
+    }
     info->m = count_;
     info->nub = all_unbounded_ ? count_ : 0;  // ODE solves a joint of only unbounded rows apart
 }
@@ -84,9 +92,10 @@ void OdePlasticRows::getInfo2(dReal, dReal, int rowskip, dReal* J1, dReal* J2, i
                               dReal* pairLoHi, int*) {
     using namespace ode_joint_object;
     load_next_joint();
+    const std::uint8_t written = correcting_ ? pass_rows() : rows_;
     int r = 0;
     for (std::size_t i = 0; i < targets_.size(); ++i) {
-        if (!has_row(i)) continue;
+        if (!((written >> i) & 1u)) continue;
         dReal* on_b = J1 + r * rowskip;
         dReal* on_a = J2 ? J2 + r * rowskip : nullptr;  // ODE zeroed both
         const RowJacobian j = jacobian(i);
@@ -96,9 +105,26 @@ void OdePlasticRows::getInfo2(dReal, dReal, int rowskip, dReal* J1, dReal* J2, i
             if (i < 3) store(on_a + dDA_LX, j.linear_a);
             store(on_a + dDA_AX, j.angular_a);
         }
-        pairRhsCfm[r * pairskip + kRhs] = targets_[i].rate;
-        pairLoHi[r * pairskip + kLo] = targets_[i].lower;
-        pairLoHi[r * pairskip + kHi] = targets_[i].upper;
+        const OdeRowTarget& t = targets_[i];
+        if (correcting_) {
+            // A rigid or held row's rate is all correction; its range what the step left of it.
+            pairRhsCfm[r * pairskip + kRhs] = t.rate;
+            pairLoHi[r * pairskip + kLo] = std::min(0.0, t.lower - solved_forces_[i]);
+            pairLoHi[r * pairskip + kHi] = std::max(0.0, t.upper - solved_forces_[i]);
+        } else if (!split_ || ((kept_push_ >> i) & 1u)) {
+            pairRhsCfm[r * pairskip + kRhs] = t.rate;
+            pairLoHi[r * pairskip + kLo] = t.lower;
+            pairLoHi[r * pairskip + kHi] = t.upper;
+        } else {
+            // Split: the rate without its correction (for a rigid or held row, 0), from the warm
+            // start f₀. A warm row solves for λ − f₀; with ODE's CFM the row reads J·v = c − cfm·λ
+            // (ODE's user guide, "Constraint Force Mixing"), which holds for the whole force when c
+            // carries −cfm·f₀.
+            const double f0 = is_warm(i) ? warm_force_[i] : 0.0;
+            pairRhsCfm[r * pairskip + kRhs] = -pairRhsCfm[r * pairskip + kCfm] * f0;
+            pairLoHi[r * pairskip + kLo] = t.lower - f0;
+            pairLoHi[r * pairskip + kHi] = t.upper - f0;
+        }
         ++r;
     }
 }
@@ -110,6 +136,7 @@ void OdePlasticRows::keep_one_push_as_row() {
         targets_[i] = OdeRowTarget{f > 0.0 ? kPushSpeed : -kPushSpeed, -std::abs(f), std::abs(f)};
         pushes_ &= static_cast<std::uint8_t>(~(1u << i));
         rows_ |= static_cast<std::uint8_t>(1u << i);
+        kept_push_ = static_cast<std::uint8_t>(1u << i);
         return;
     }
 }
@@ -124,8 +151,59 @@ void OdePlasticRows::add_row_load(std::size_t i, double f, WorldLoad& on_b, Worl
 }
 
 void OdePlasticRows::add_each_push(WorldLoad& on_b, WorldLoad& on_a) const {
-    for (std::size_t i = 0; i < kDofCount; ++i)
+    for (std::size_t i = 0; i < kDofCount; ++i) {
         if (has_push(i)) add_row_load(i, targets_[i].upper, on_b, on_a);
+        if (is_warm(i)) add_row_load(i, warm_force_[i], on_b, on_a);
+    }
+}
+
+void OdePlasticRows::start_warm() {
+    // As a sequential-impulse solver carries each row's impulse to the next step (Catto, "Iterative
+    // Dynamics with Temporal Coherence", GDC 2005: warm starting); ODE 0.16 has it only as a
+    // compile-time option of its quickstep.cpp, off in its builds.
+    warm_ = 0;
+    corrected_motion_ = {};
+    const std::uint8_t carried = static_cast<std::uint8_t>(rows_ & last_rows_ & ~kept_push_);
+    for (std::size_t i = 0; i < kDofCount; ++i) {
+        if (!((carried >> i) & 1u)) continue;
+        const double f0 = std::clamp(last_forces_[i], targets_[i].lower, targets_[i].upper);
+        if (f0 == 0.0) continue;
+        warm_force_[i] = f0;
+        warm_ |= static_cast<std::uint8_t>(1u << i);
+    }
+}
+
+double OdePlasticRows::largest_correction() const {
+    double largest = 0.0;
+    const std::uint8_t corrected = corrected_rows();
+    for (std::size_t i = 0; i < kDofCount; ++i)
+        if ((corrected >> i) & 1u) largest = std::max(largest, std::abs(targets_[i].rate));
+    return largest;
+}
+
+void OdePlasticRows::begin_correction_pass(const std::optional<PerDof<double>>& solved) {
+    correcting_ = true;
+    pass_solved_ = solved.has_value();
+    if (solved) solved_forces_ = *solved;
+    velocity_feedback_ = feedback;
+    feedback = nullptr;
+}
+
+bool OdePlasticRows::end_correction_pass(double dt) {
+    correcting_ = false;
+    feedback = velocity_feedback_;
+    if (!pass_solved_) return false;
+    const BodyVelocity on_b = body_velocity(node[0].body);
+    const BodyVelocity on_a = node[1].body ? body_velocity(node[1].body) : BodyVelocity{};
+    const std::uint8_t corrected = pass_rows();
+    for (std::size_t i = 0; i < kDofCount; ++i) {
+        if (!((corrected >> i) & 1u)) continue;
+        const RowJacobian j = jacobian(i);
+        corrected_motion_[i] = (dot(j.linear_b, on_b.linear) + dot(j.angular_b, on_b.angular) + dot(j.linear_a, on_a.linear) +
+                                dot(j.angular_a, on_a.angular)) *
+                               dt;
+    }
+    return true;
 }
 
 void OdePlasticRows::apply_pushes(double sign) {

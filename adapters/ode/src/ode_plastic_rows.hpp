@@ -54,7 +54,7 @@ public:
     void set_rows(const JointFrameState& state, TargetOf&& target_of) {
         withdraw_pushes();
         set_geometry(state);
-        rows_ = pushes_ = 0;
+        rows_ = pushes_ = kept_push_ = 0;
         for (std::size_t i = 0; i < kDofCount; ++i) {
             const std::optional<OdeRowTarget> target = target_of(i);
             if (!target) continue;
@@ -63,8 +63,41 @@ public:
         }
         if (rows_ == 0 && pushes_ != 0) keep_one_push_as_row();
         count_rows();
-        if (pushes_ != 0) apply_pushes(1.0);
+        if (split_) start_warm();
+        if (pushes_ != 0 || warm_ != 0) apply_pushes(1.0);
     }
+
+    // Split corrections (OdePlasticJoints::Stepper::QuickSplit): from the next set_rows on, the rows
+    // hold their rates without their position corrections (Baumgarte), which a pass of their own
+    // applies (correction_pass), and start from the forces of the step before (a warm start).
+    // Off: the corrections are in the rows' rates, and the rows start from 0, as ODE's own joints.
+    void split_corrections(bool on) {
+        split_ = on;
+        last_rows_ = warm_ = 0;
+        corrected_motion_ = {};
+    }
+    // The rows' forces of the step just solved (generalised, on b), for the next step's warm start.
+    void remember_forces(const PerDof<double>& forces) {
+        if (!split_) return;
+        last_forces_ = forces;
+        last_rows_ = rows_;
+    }
+    // The correction pass: while it lasts, the joint's rows are its corrections alone — each rigid
+    // or held row driven to its correction rate, no warm start — and ODE writes no feedback (that of
+    // the velocity solve stays). A held row's correction may use only what its force range leaves
+    // beyond the force f the velocity solve gave it: [min(0, lower − f), max(0, upper − f)], as
+    // Bullet bounds a row's split impulse (btSequentialImpulseConstraintSolver's
+    // resolveSplitPenetrationImpulse). So a row at its capacity is not pushed back against its flow.
+    // `solved`: the rows' forces in the step (forces_on_b of the whole load), or none where the
+    // step did not solve the joint (no rows in the pass then). Its end records, per dof, the motion
+    // the pass made along each row: J·v·dt with v the bodies' velocities of the pass.
+    void begin_correction_pass(const std::optional<PerDof<double>>& solved);
+    // Whether the step solved the joint (`solved` was given).
+    bool end_correction_pass(double dt);
+    // The largest correction rate of the rows [m/s | rad/s]: 0 when there is nothing to correct.
+    double largest_correction() const;
+    // Per dof, the motion the last correction pass made along the row [m | rad]; 0 without one.
+    const PerDof<double>& corrected_motion() const { return corrected_motion_; }
 
     // The step solved the joint: ODE applied the pushes and cleared its bodies' accumulators.
     void pushes_taken() { pushes_applied_ = false; }
@@ -75,7 +108,7 @@ public:
     // Adds the loads the pushes put on b and on a (world frame, torques about each centre, as ODE's
     // feedback) to what ODE's feedback says the rows applied: the joint's whole action.
     void add_pushes(WorldLoad& on_b, WorldLoad& on_a) const {
-        if (pushes_ != 0) add_each_push(on_b, on_a);  // inline: most joints have none (rigid-plastic)
+        if (pushes_ != 0 || warm_ != 0) add_each_push(on_b, on_a);  // inline: most joints have none (rigid-plastic)
     }
 
     // The generalised forces the rows and pushes applied to b in the step they were set for
@@ -117,6 +150,15 @@ private:
     // Dof i's row load Jᵀ·f on b and on a (world frame, torques about each body's centre).
     void add_row_load(std::size_t i, double f, WorldLoad& on_b, WorldLoad& on_a) const;
     void add_each_push(WorldLoad& on_b, WorldLoad& on_a) const;
+    // With split corrections, each row that had a row in the step before starts from that step's
+    // force f₀ (clamped into its range): f₀ goes on the bodies with the pushes, and the row solves
+    // for the rest, within [lower − f₀, upper − f₀]. Clears the last pass's corrected motion.
+    void start_warm();
+    bool is_warm(std::size_t i) const { return (warm_ >> i) & 1u; }
+    // The rows the correction pass drives: all but a push kept as a row.
+    std::uint8_t corrected_rows() const { return rows_ & static_cast<std::uint8_t>(~kept_push_); }
+    // The rows the pass writes: none where the step did not solve the joint.
+    std::uint8_t pass_rows() const { return pass_solved_ ? corrected_rows() : 0; }
     // Adds sign × the pushes' loads to the bodies' accumulators; pushes_applied_ after +1.
     void apply_pushes(double sign);
 
@@ -131,6 +173,18 @@ private:
     std::uint8_t count_ = 0;
     bool all_unbounded_ = false;
     bool pushes_applied_ = false;  // in the bodies' accumulators, not yet taken by a step
+    // Split corrections (split_corrections): the warm start's forces, and the correction pass.
+    bool split_ = false;
+    bool correcting_ = false;         // in the correction pass
+    std::uint8_t kept_push_ = 0;      // bit i: dof i is a push kept as a row (keep_one_push_as_row)
+    std::uint8_t warm_ = 0;           // bit i: row i starts from warm_force_[i]
+    std::uint8_t last_rows_ = 0;      // the rows whose forces last_forces_ holds
+    PerDof<double> warm_force_{};     // [N | N·m]
+    PerDof<double> last_forces_{};
+    PerDof<double> corrected_motion_{};
+    PerDof<double> solved_forces_{};  // the rows' forces in the step, during the correction pass
+    bool pass_solved_ = false;
+    dJointFeedback* velocity_feedback_ = nullptr;  // set aside during the correction pass
 };
 
 }  // namespace plascap

@@ -89,6 +89,18 @@ public:
     dBodyID body_a() const { return a_; }
     dBodyID body_b() const { return b_; }
 
+    // Split corrections (OdePlasticJoints::Stepper::QuickSplit; ode_plastic_rows.hpp): from the
+    // next plan on, the rows start warm and leave their position corrections to a pass of their own.
+    void split_corrections(bool on);
+    // The correction pass, which OdePlasticJoints runs as a second QuickStep between a step and its
+    // settle. end_correction_pass returns the work the joint's own loads in the bodies'
+    // accumulators (pushes, warm starts) do over the pass's motion, with the bodies' velocities
+    // still those of the pass [J].
+    void begin_correction_pass();
+    double end_correction_pass(double dt);
+    // The largest rate the pass would correct at [m/s | rad/s].
+    double largest_correction() const;
+
 private:
     JointFrameState measure() const;
     // The rows of the next step of dt, from the joint as measured at its start.
@@ -96,6 +108,7 @@ private:
     // The law after a step, from the rows' feedback and the joint as measured at its end.
     JointEvent settle(const JointFrameState& state, double dt);
     std::optional<BodyVelocity> a_body_velocity() const;  // none when b is joined to the world
+    WorldLoad feedback_on_b() const;  // what ODE's feedback says the rows applied to b
     void wake();
     // ODE writes a joint's feedback only in a step that solves it: one whose bodies sleep (auto-
     // disabled) is skipped with their island. A value ODE never writes, put in the feedback once

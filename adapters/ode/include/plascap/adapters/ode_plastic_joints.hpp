@@ -22,9 +22,12 @@
 #include <vector>
 
 #include "plascap/adapters/impulse_work.hpp"
+#include "plascap/adapters/joint_loads.hpp"
 #include "plascap/adapters/ode_plastic_joint.hpp"
 
 namespace plascap {
+
+class OdeWorldBodies;  // src/ode_world_bodies.hpp
 
 class OdePlasticJoints {
 public:
@@ -32,9 +35,21 @@ public:
         Quick,  // dWorldQuickStep: iterative, O(rows)
         Exact,  // dWorldStep: the direct LCP solver, O(rows³) per island — 0.18 s a step at 1,206 rows,
                 // 85 s at 7,050 (a 2-core VM; docs/structures.md, "Known limits")
+        // dWorldQuickStep with split corrections: the joints' rows start from the forces of the
+        // step before (a warm start) and hold their rates without position corrections; a second
+        // QuickStep, from rest, without gravity or loads, then makes the corrections, and every
+        // body gets its velocity of the first back (as Bullet's split impulses). A structure under
+        // load then no longer sags by what QuickStep's iterations leave (docs/adapters.md, "ODE:
+        // split corrections"). Up to twice QuickStep's cost; the pass is skipped where nothing
+        // needs correcting. Every joint of the world acts in the pass too: contacts keep bodies
+        // apart, and contacts and the caller's own joints make their ODE corrections once more.
+        QuickSplit,
     };
 
-    explicit OdePlasticJoints(dWorldID world) : world_(world) {}
+    explicit OdePlasticJoints(dWorldID world);
+    ~OdePlasticJoints();
+    OdePlasticJoints(OdePlasticJoints&&) noexcept;
+    OdePlasticJoints& operator=(OdePlasticJoints&&) noexcept;
 
     // A joint between a (nullptr: the world) and b whose frame is `frame_in_world` now (origin = the
     // anchor, columns = the joint's x, y (beam axis), z). It takes hold at the first step that starts
@@ -59,6 +74,10 @@ public:
     // [J]: negative where impacts and friction took energy (impulse_work.hpp). Contact joints a caller
     // makes itself are not counted.
     double contact_work() const { return contact_work_; }
+    // The work the caller's loads and gravity did over the motion the correction passes made
+    // (Stepper::QuickSplit), summed over the steps so far [J]: work no velocity carried, which an
+    // energy ledger books apart, as Bullet's split-impulse pushes.
+    double correction_work() const { return correction_work_; }
 
     double time() const { return time_; }  // [s], the sum of the steps taken
     // How many joints the last step solved (OdePlasticJoint::solved): those whose bodies slept, broken
@@ -88,12 +107,28 @@ private:
     // Makes a contact joint and has it report its forces into contacts_.
     void attach_contact(dJointGroupID group, const dContact& contact, dBodyID b1, dBodyID b2);
     void book_contact_work(double dt);
+    // Stepper::QuickSplit: the step itself, and the correction pass after it.
+    void split_step(double dt);
+    void correction_pass(double dt);
+    // Tells every joint whether its rows are split (on a change of stepper).
+    void split_corrections(bool on);
 
     dWorldID world_;
     std::vector<Entry> joints_;
     std::multiset<std::pair<dBodyID, dBodyID>> joined_;  // intact joints' body pairs, ordered
     std::deque<Contact> contacts_;  // those collide() made for the coming step
     double contact_work_ = 0.0;
+    double correction_work_ = 0.0;
+    bool split_ = false;  // the joints' rows are split (the last step's stepper was QuickSplit)
+    // Per body of the world, for the correction pass: the loads of the caller and gravity in the
+    // step, and the velocities the step ended with.
+    struct BodyRecord {
+        dBodyID body;
+        WorldLoad load;
+        BodyVelocity velocity;
+    };
+    std::vector<BodyRecord> records_;
+    std::unique_ptr<OdeWorldBodies> bodies_;  // made at the first split step
     double time_ = 0.0;
     std::size_t solved_joints_ = 0;
     double last_dt_ = std::numeric_limits<double>::quiet_NaN();  // the dt of the last step; NaN before the first
