@@ -66,11 +66,6 @@ std::optional<OdeRowTarget> row_target(DofMode mode, const std::optional<RowComm
     return OdeRowTarget{0.0, command->force, command->force};  // pinned: the spring's force, pushed (set_rows)
 }
 
-// The work of a load held over a motion at `velocity` for dt [J].
-double load_work(const WorldLoad& load, const BodyVelocity& velocity, double dt) {
-    return (dot(load.force, velocity.linear) + dot(load.torque_about_com, velocity.angular)) * dt;
-}
-
 }  // namespace
 
 OdePlasticJoint::OdePlasticJoint(dWorldID world, dBodyID a, dBodyID b, const Pose& frame_in_world,
@@ -166,7 +161,7 @@ double OdePlasticJoint::end_correction_pass(double dt) {
     // caller's: their work over the pass's motion is the joint's, not the caller's loads'.
     WorldLoad on_b, on_a;
     rows_->add_pushes(on_b, on_a);
-    return load_work(on_b, body_velocity(b_), dt) + (a_ ? load_work(on_a, body_velocity(a_), dt) : 0.0);
+    return held_load_work(on_b, body_velocity(b_), dt) + (a_ ? held_load_work(on_a, body_velocity(a_), dt) : 0.0);
 }
 
 double OdePlasticJoint::largest_correction() const { return rows_->largest_correction(); }

@@ -15,11 +15,6 @@ namespace {
 // nothing to correct (as plascap's Bullet solver skips its pushes).
 constexpr double kNothingToCorrect = 1e-6;
 
-// The work of a load held over a motion at `velocity` for dt [J].
-double load_work(const WorldLoad& load, const BodyVelocity& velocity, double dt) {
-    return (dot(load.force, velocity.linear) + dot(load.torque_about_com, velocity.angular)) * dt;
-}
-
 void set_velocity(dBodyID body, const BodyVelocity& v) {
     dBodySetLinearVel(body, v.linear[0], v.linear[1], v.linear[2]);
     dBodySetAngularVel(body, v.angular[0], v.angular[1], v.angular[2]);
@@ -148,7 +143,7 @@ void OdePlasticJoints::correction_pass(double dt) {
     dWorldSetQuickStepNumIterations(world_, iterations);
     // The loads did work over the pass's motion that no velocity carried (as Bullet's pushes: the
     // ledger's `corrections`).
-    for (const BodyRecord& r : records_) correction_work_ -= load_work(r.load, body_velocity(r.body), dt);
+    for (const BodyRecord& r : records_) correction_work_ -= held_load_work(r.load, body_velocity(r.body), dt);
     for (Entry& e : joints_) correction_work_ += e.joint->end_correction_pass(dt);
     dWorldSetGravity(world_, gravity[0], gravity[1], gravity[2]);
     for (const BodyRecord& r : records_) set_velocity(r.body, r.velocity);

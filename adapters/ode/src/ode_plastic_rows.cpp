@@ -34,6 +34,8 @@ void add_to_accumulators(dxBody* body, const WorldLoad& load, double sign) {
 
 }  // namespace
 
+const PerDof<double> OdePlasticRows::kNoMotion{};
+
 OdePlasticRows::RowJacobian OdePlasticRows::jacobian(std::size_t i) const {
     // +J on b, −J on a (plascap's Bullet constraint writes the same rows). A translation row acts at
     // the anchor: J·v = axis·(v_b + ω_b × r_b − v_a − ω_a × r_a); a rotation row along the angle's
@@ -109,8 +111,8 @@ void OdePlasticRows::getInfo2(dReal, dReal, int rowskip, dReal* J1, dReal* J2, i
         if (correcting_) {
             // A rigid or held row's rate is all correction; its range what the step left of it.
             pairRhsCfm[r * pairskip + kRhs] = t.rate;
-            pairLoHi[r * pairskip + kLo] = std::min(0.0, t.lower - solved_forces_[i]);
-            pairLoHi[r * pairskip + kHi] = std::max(0.0, t.upper - solved_forces_[i]);
+            pairLoHi[r * pairskip + kLo] = std::min(0.0, t.lower - split_->solved_forces[i]);
+            pairLoHi[r * pairskip + kHi] = std::max(0.0, t.upper - split_->solved_forces[i]);
         } else if (!split_ || ((kept_push_ >> i) & 1u)) {
             pairRhsCfm[r * pairskip + kRhs] = t.rate;
             pairLoHi[r * pairskip + kLo] = t.lower;
@@ -120,7 +122,7 @@ void OdePlasticRows::getInfo2(dReal, dReal, int rowskip, dReal* J1, dReal* J2, i
             // start f₀. A warm row solves for λ − f₀; with ODE's CFM the row reads J·v = c − cfm·λ
             // (ODE's user guide, "Constraint Force Mixing"), which holds for the whole force when c
             // carries −cfm·f₀.
-            const double f0 = is_warm(i) ? warm_force_[i] : 0.0;
+            const double f0 = is_warm(i) ? split_->warm_force[i] : 0.0;
             pairRhsCfm[r * pairskip + kRhs] = -pairRhsCfm[r * pairskip + kCfm] * f0;
             pairLoHi[r * pairskip + kLo] = t.lower - f0;
             pairLoHi[r * pairskip + kHi] = t.upper - f0;
@@ -153,7 +155,7 @@ void OdePlasticRows::add_row_load(std::size_t i, double f, WorldLoad& on_b, Worl
 void OdePlasticRows::add_each_push(WorldLoad& on_b, WorldLoad& on_a) const {
     for (std::size_t i = 0; i < kDofCount; ++i) {
         if (has_push(i)) add_row_load(i, targets_[i].upper, on_b, on_a);
-        if (is_warm(i)) add_row_load(i, warm_force_[i], on_b, on_a);
+        if (is_warm(i)) add_row_load(i, split_->warm_force[i], on_b, on_a);
     }
 }
 
@@ -162,19 +164,20 @@ void OdePlasticRows::start_warm() {
     // Dynamics with Temporal Coherence", GDC 2005: warm starting); ODE 0.16 has it only as a
     // compile-time option of its quickstep.cpp, off in its builds.
     warm_ = 0;
-    corrected_motion_ = {};
+    split_->corrected_motion = {};
     const std::uint8_t carried = static_cast<std::uint8_t>(rows_ & last_rows_ & ~kept_push_);
     for (std::size_t i = 0; i < kDofCount; ++i) {
         if (!((carried >> i) & 1u)) continue;
-        const double f0 = std::clamp(last_forces_[i], targets_[i].lower, targets_[i].upper);
+        const double f0 = std::clamp(split_->last_forces[i], targets_[i].lower, targets_[i].upper);
         if (f0 == 0.0) continue;
-        warm_force_[i] = f0;
+        split_->warm_force[i] = f0;
         warm_ |= static_cast<std::uint8_t>(1u << i);
     }
 }
 
 double OdePlasticRows::largest_correction() const {
     double largest = 0.0;
+    if (!split_) return largest;
     const std::uint8_t corrected = corrected_rows();
     for (std::size_t i = 0; i < kDofCount; ++i)
         if ((corrected >> i) & 1u) largest = std::max(largest, std::abs(targets_[i].rate));
@@ -182,24 +185,26 @@ double OdePlasticRows::largest_correction() const {
 }
 
 void OdePlasticRows::begin_correction_pass(const std::optional<PerDof<double>>& solved) {
+    if (!split_) return;  // a joint of another stepper: no rows in the pass
     correcting_ = true;
-    pass_solved_ = solved.has_value();
-    if (solved) solved_forces_ = *solved;
-    velocity_feedback_ = feedback;
+    split_->pass_solved = solved.has_value();
+    if (solved) split_->solved_forces = *solved;
+    split_->velocity_feedback = feedback;
     feedback = nullptr;
 }
 
 bool OdePlasticRows::end_correction_pass(double dt) {
+    if (!correcting_) return false;
     correcting_ = false;
-    feedback = velocity_feedback_;
-    if (!pass_solved_) return false;
+    feedback = split_->velocity_feedback;
+    if (!split_->pass_solved) return false;
     const BodyVelocity on_b = body_velocity(node[0].body);
     const BodyVelocity on_a = node[1].body ? body_velocity(node[1].body) : BodyVelocity{};
     const std::uint8_t corrected = pass_rows();
     for (std::size_t i = 0; i < kDofCount; ++i) {
         if (!((corrected >> i) & 1u)) continue;
         const RowJacobian j = jacobian(i);
-        corrected_motion_[i] = (dot(j.linear_b, on_b.linear) + dot(j.angular_b, on_b.angular) + dot(j.linear_a, on_a.linear) +
+        split_->corrected_motion[i] = (dot(j.linear_b, on_b.linear) + dot(j.angular_b, on_b.angular) + dot(j.linear_a, on_a.linear) +
                                 dot(j.angular_a, on_a.angular)) *
                                dt;
     }

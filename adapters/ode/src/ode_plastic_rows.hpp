@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 
 #include "ode_joint_object.hpp"
@@ -72,14 +73,13 @@ public:
     // applies (correction_pass), and start from the forces of the step before (a warm start).
     // Off: the corrections are in the rows' rates, and the rows start from 0, as ODE's own joints.
     void split_corrections(bool on) {
-        split_ = on;
+        split_ = on ? std::make_unique<Split>() : nullptr;
         last_rows_ = warm_ = 0;
-        corrected_motion_ = {};
     }
     // The rows' forces of the step just solved (generalised, on b), for the next step's warm start.
     void remember_forces(const PerDof<double>& forces) {
         if (!split_) return;
-        last_forces_ = forces;
+        split_->last_forces = forces;
         last_rows_ = rows_;
     }
     // The correction pass: while it lasts, the joint's rows are its corrections alone — each rigid
@@ -97,7 +97,7 @@ public:
     // The largest correction rate of the rows [m/s | rad/s]: 0 when there is nothing to correct.
     double largest_correction() const;
     // Per dof, the motion the last correction pass made along the row [m | rad]; 0 without one.
-    const PerDof<double>& corrected_motion() const { return corrected_motion_; }
+    const PerDof<double>& corrected_motion() const { return split_ ? split_->corrected_motion : kNoMotion; }
 
     // The step solved the joint: ODE applied the pushes and cleared its bodies' accumulators.
     void pushes_taken() { pushes_applied_ = false; }
@@ -158,7 +158,7 @@ private:
     // The rows the correction pass drives: all but a push kept as a row.
     std::uint8_t corrected_rows() const { return rows_ & static_cast<std::uint8_t>(~kept_push_); }
     // The rows the pass writes: none where the step did not solve the joint.
-    std::uint8_t pass_rows() const { return pass_solved_ ? corrected_rows() : 0; }
+    std::uint8_t pass_rows() const { return split_ && split_->pass_solved ? corrected_rows() : 0; }
     // Adds sign × the pushes' loads to the bodies' accumulators; pushes_applied_ after +1.
     void apply_pushes(double sign);
 
@@ -173,18 +173,22 @@ private:
     std::uint8_t count_ = 0;
     bool all_unbounded_ = false;
     bool pushes_applied_ = false;  // in the bodies' accumulators, not yet taken by a step
-    // Split corrections (split_corrections): the warm start's forces, and the correction pass.
-    bool split_ = false;
-    bool correcting_ = false;         // in the correction pass
-    std::uint8_t kept_push_ = 0;      // bit i: dof i is a push kept as a row (keep_one_push_as_row)
-    std::uint8_t warm_ = 0;           // bit i: row i starts from warm_force_[i]
-    std::uint8_t last_rows_ = 0;      // the rows whose forces last_forces_ holds
-    PerDof<double> warm_force_{};     // [N | N·m]
-    PerDof<double> last_forces_{};
-    PerDof<double> corrected_motion_{};
-    PerDof<double> solved_forces_{};  // the rows' forces in the step, during the correction pass
-    bool pass_solved_ = false;
-    dJointFeedback* velocity_feedback_ = nullptr;  // set aside during the correction pass
+    // Split corrections (split_corrections): the flags here, the forces apart, made only for a
+    // split joint, so that a joint of the default stepper keeps its size (issue 16's cost).
+    bool correcting_ = false;     // in the correction pass
+    std::uint8_t kept_push_ = 0;  // bit i: dof i is a push kept as a row (keep_one_push_as_row)
+    std::uint8_t warm_ = 0;       // bit i: row i starts from warm_force[i]
+    std::uint8_t last_rows_ = 0;  // the rows whose forces last_forces holds
+    struct Split {
+        PerDof<double> warm_force{};  // [N | N·m]
+        PerDof<double> last_forces{};
+        PerDof<double> corrected_motion{};
+        PerDof<double> solved_forces{};  // the rows' forces in the step, during the correction pass
+        bool pass_solved = false;
+        dJointFeedback* velocity_feedback = nullptr;  // set aside during the correction pass
+    };
+    std::unique_ptr<Split> split_;  // none: not split
+    static const PerDof<double> kNoMotion;
 };
 
 }  // namespace plascap

@@ -5,6 +5,7 @@
 #include <array>
 
 #include "plascap/adapters/dof.hpp"
+#include "plascap/adapters/impulse_work.hpp"
 #include "plascap/adapters/vec3.hpp"
 
 namespace plascap {
@@ -13,6 +14,11 @@ struct WorldLoad {
     Vec3 force{};             // on body b, world frame [N]
     Vec3 torque_about_com{};  // on body b about its centre of mass, world frame [N·m]
 };
+
+// The work of a load held over dt on a body moving at `velocity` [J]: (F·v + T·ω)·dt.
+inline double held_load_work(const WorldLoad& load, const BodyVelocity& velocity, double dt) {
+    return (dot(load.force, velocity.linear) + dot(load.torque_about_com, velocity.angular)) * dt;
+}
 
 struct JointAxesInWorld {
     Vec3 anchor{};                      // where the joint acts on b [m]
