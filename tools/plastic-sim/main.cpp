@@ -31,7 +31,7 @@ void add_options(CLI::App& app, Options& o) {
     app.add_option("SCENE", o.scene_file, "Scene file (JSON, docs/plastic-sim.md); - reads standard input");
     app.add_option("--engine", o.engine, "Physics engine: bullet (plascap's own Bullet constraint), bullet-spring2 (Bullet's "
                                      "btGeneric6DofSpring2Constraint driven from outside), bullet-6dof-spring (the older "
-                                     "btGeneric6DofSpringConstraint), ode (dWorldQuickStep) or ode-step (dWorldStep); see --list-engines")->capture_default_str();
+                                     "btGeneric6DofSpringConstraint), ode (dWorldQuickStep, its rows warm-started and their position corrections split off) or ode-step (dWorldStep); see --list-engines")->capture_default_str();
     app.add_flag("--json", o.json, "Print the end state as one JSON object instead of the table");
     app.add_option("--csv", o.csv, "Write a per-step trace to this CSV file (time, bodies, joint forces, plastic "
                                    "offsets, accumulated plastic deformation, dissipated energy, broken)");

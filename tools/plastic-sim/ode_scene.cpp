@@ -84,7 +84,7 @@ public:
     std::string description() const override {
         const bool double_precision = dCheckConfiguration("ODE_double_precision") != 0;
         return std::string("ODE, ") + (double_precision ? "double" : "single") + " precision, " +
-               (quick_ ? "dWorldQuickStep" : "dWorldStep");
+               (quick_ ? "dWorldQuickStep, split corrections" : "dWorldStep");
     }
 
     void step() override {
