@@ -14,7 +14,7 @@ import sys
 SIM = "build/tools/plastic-sim/plastic-sim"
 CALC = "build/tools/section-calc/section-calc"
 # The tests' iterations, and enough for the solver's slack to stop mattering (docs/structures.md).
-ENGINES = [("bullet", 100), ("bullet", 300), ("ode", 500), ("ode", 1500)]
+ENGINES = [("bullet", 100), ("bullet", 300), ("ode", 100), ("ode", 300)]
 
 
 def member(name, a, b, z, segments):
