@@ -161,7 +161,7 @@ double OdePlasticJoint::end_correction_pass(double dt) {
     // caller's: their work over the pass's motion is the joint's, not the caller's loads'.
     WorldLoad on_b, on_a;
     rows_->add_pushes(on_b, on_a);
-    return held_load_work(on_b, body_velocity(b_), dt) + (a_ ? held_load_work(on_a, body_velocity(a_), dt) : 0.0);
+    return held_load_work(on_b, body_velocity(b_), dt) + held_load_work(on_a, body_velocity(a_), dt);  // a_ 0: at rest
 }
 
 double OdePlasticJoint::largest_correction() const { return rows_->largest_correction(); }

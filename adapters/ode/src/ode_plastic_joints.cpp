@@ -98,11 +98,24 @@ void OdePlasticJoints::split_corrections(bool on) {
 }
 
 void OdePlasticJoints::split_step(double dt) {
-    // The loads on each body in the step: the accumulators (the caller's loads, and the joints'
-    // pushes and warm starts, which end_correction_pass takes back out) and gravity.
-    if (!bodies_) bodies_ = std::make_unique<OdeWorldBodies>(world_);
+    // Whether the step needs a correction pass is known from the rows planned for it: a structure at
+    // rest needs none, and then neither the bodies' loads nor the pass.
+    double largest = 0.0;
+    for (const Entry& e : joints_)
+        if (e.joint->engaged()) largest = std::max(largest, e.joint->largest_correction());
+    const bool correcting = largest >= kNothingToCorrect;
     dVector3 gravity;
     dWorldGetGravity(world_, gravity);
+    if (correcting) record_loads(gravity);
+    dWorldQuickStep(world_, dt);
+    book_contact_work(dt);
+    if (correcting) correction_pass(dt, gravity);
+}
+
+void OdePlasticJoints::record_loads(const dVector3 gravity) {
+    // The accumulators hold the caller's loads and the joints' pushes and warm starts (which
+    // end_correction_pass takes back out); gravity is ODE's to add.
+    if (!bodies_) bodies_ = std::make_unique<OdeWorldBodies>(world_);
     records_.clear();
     for (dBodyID body : bodies_->list()) {
         const dReal* f = dBodyGetForce(body);
@@ -115,21 +128,12 @@ void OdePlasticJoints::split_step(double dt) {
         }
         records_.push_back(r);
     }
-    dWorldQuickStep(world_, dt);
-    book_contact_work(dt);
-    correction_pass(dt);
 }
 
-void OdePlasticJoints::correction_pass(double dt) {
-    double largest = 0.0;
-    for (const Entry& e : joints_)
-        if (e.joint->engaged()) largest = std::max(largest, e.joint->largest_correction());
-    if (largest < kNothingToCorrect) return;
+void OdePlasticJoints::correction_pass(double dt, const dVector3 gravity) {
     // From rest, with no gravity or loads: the bodies move by the corrections alone. Every joint of
     // the world takes part: contacts keep the bodies out of one another (and make their own
     // position corrections once more), the caller's joints make theirs once more.
-    dVector3 gravity;
-    dWorldGetGravity(world_, gravity);
     dWorldSetGravity(world_, 0, 0, 0);
     for (BodyRecord& r : records_) {
         r.velocity = body_velocity(r.body);

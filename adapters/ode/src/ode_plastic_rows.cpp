@@ -199,7 +199,7 @@ bool OdePlasticRows::end_correction_pass(double dt) {
     feedback = split_->velocity_feedback;
     if (!split_->pass_solved) return false;
     const BodyVelocity on_b = body_velocity(node[0].body);
-    const BodyVelocity on_a = node[1].body ? body_velocity(node[1].body) : BodyVelocity{};
+    const BodyVelocity on_a = body_velocity(node[1].body);  // the world (0): at rest
     const std::uint8_t corrected = pass_rows();
     for (std::size_t i = 0; i < kDofCount; ++i) {
         if (!((corrected >> i) & 1u)) continue;

@@ -107,9 +107,11 @@ private:
     // Makes a contact joint and has it report its forces into contacts_.
     void attach_contact(dJointGroupID group, const dContact& contact, dBodyID b1, dBodyID b2);
     void book_contact_work(double dt);
-    // Stepper::QuickSplit: the step itself, and the correction pass after it.
+    // Stepper::QuickSplit: the step itself; the bodies' loads in it (records_), taken before it; and
+    // the correction pass after it.
     void split_step(double dt);
-    void correction_pass(double dt);
+    void record_loads(const dVector3 gravity);
+    void correction_pass(double dt, const dVector3 gravity);
     // Tells every joint whether its rows are split (on a change of stepper).
     void split_corrections(bool on);
 
